@@ -1,0 +1,35 @@
+// Helpers shared by the test executables: where test data lives, and skipping
+// with a clear message when the shared datasets are absent.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace reebkit::test {
+
+/// Folder of hand-written fixtures committed under tests/data.
+std::filesystem::path fixture_dir();
+/// Path of a committed fixture under tests/data.
+std::filesystem::path fixture(const std::string& name);
+/// Folder of the committed meshes under datasets/.
+std::filesystem::path embedded_dataset_dir();
+
+/// Unpacked shared dataset folder (e.g. "cgal_meshes", "shrec07_watertight",
+/// "tosca_dev"), or nullopt when ../shared/datasets is not beside the checkout.
+std::optional<std::filesystem::path> shared_dataset(const std::string& folder);
+
+}  // namespace reebkit::test
+
+/// Binds `var` to the unpacked shared dataset `folder`, or skips the test with
+/// a message saying which folder is missing.
+#define REEBKIT_REQUIRE_DATASET(var, folder)                                             \
+  const auto var##_opt = ::reebkit::test::shared_dataset(folder);                        \
+  if (!var##_opt) {                                                                      \
+    GTEST_SKIP() << "shared dataset '" << folder << "' not found (expected "             \
+                 << REEBKIT_SHARED_DATASETS << " unpacked into " << REEBKIT_UNPACKED_DATASETS \
+                 << "); skipping";                                                       \
+  }                                                                                      \
+  const std::filesystem::path var = *var##_opt

@@ -1,0 +1,20 @@
+# Unpacks each archive of ../shared/datasets into DEST once (a stamp file per
+# archive). Absent archives are skipped: the tests that need them skip too.
+file(MAKE_DIRECTORY "${DEST}")
+file(GLOB archives "${SHARED}/*.tar.xz")
+foreach(archive IN LISTS archives)
+  get_filename_component(name "${archive}" NAME_WE)
+  set(stamp "${DEST}/${name}.unpacked")
+  if(NOT EXISTS "${stamp}" OR "${archive}" IS_NEWER_THAN "${stamp}")
+    message(STATUS "unpacking ${archive}")
+    execute_process(COMMAND ${CMAKE_COMMAND} -E tar xJf "${archive}"
+                    WORKING_DIRECTORY "${DEST}" RESULT_VARIABLE rc)
+    if(NOT rc EQUAL 0)
+      message(FATAL_ERROR "could not unpack ${archive}")
+    endif()
+    file(TOUCH "${stamp}")
+  endif()
+endforeach()
+if(EXISTS "${SHARED}/bunny.off")
+  file(COPY "${SHARED}/bunny.off" DESTINATION "${DEST}")
+endif()

@@ -1,0 +1,31 @@
+// Shared plumbing of the `reeb` subcommands.
+#pragma once
+
+#include <boost/program_options.hpp>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace reebkit::cli {
+
+namespace po = boost::program_options;
+
+/// A subcommand: its name, a one-line summary, and its entry point, which
+/// receives the arguments after the subcommand name and returns an exit code.
+struct Command {
+  const char* name;
+  const char* summary;
+  std::function<int(const std::vector<std::string>&)> run;
+};
+
+/// Every subcommand, in the order `reeb --help` lists them.
+const std::vector<Command>& commands();
+
+/// Parses `args` against `options` (+ positional), handling --help: returns
+/// false when help was printed and the command should exit 0.
+bool parse(const std::vector<std::string>& args, const std::string& usage,
+           const po::options_description& options, const po::positional_options_description& positional,
+           po::variables_map& vm);
+
+}  // namespace reebkit::cli

@@ -1,0 +1,54 @@
+// reeb: invariant high-level Reeb graphs of 3D meshes, from the command line.
+#include "reeb/cli.h"
+#include "reebkit/core/error.h"
+
+#include <cstring>
+#include <exception>
+#include <iostream>
+
+namespace reebkit::cli {
+
+const std::vector<Command>& commands() {
+  static const std::vector<Command> all = {};
+  return all;
+}
+
+}  // namespace reebkit::cli
+
+namespace {
+
+void print_usage() {
+  std::cout << "reeb " << REEBKIT_VERSION
+            << " - invariant high-level Reeb graphs of 3D meshes (Tierny et al. 2006)\n\n"
+               "usage: reeb <command> [options]   (reeb <command> --help for details)\n\ncommands:\n";
+  for (const auto& c : reebkit::cli::commands()) std::cout << "  " << c.name << "\t" << c.summary << "\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
+    print_usage();
+    return argc < 2 ? 2 : 0;
+  }
+  if (!std::strcmp(argv[1], "--version")) {
+    std::cout << "reeb " << REEBKIT_VERSION << "\n";
+    return 0;
+  }
+  const std::vector<std::string> args(argv + 2, argv + argc);
+  for (const auto& c : reebkit::cli::commands()) {
+    if (c.name != std::string(argv[1])) continue;
+    try {
+      return c.run(args);
+    } catch (const boost::program_options::error& e) {
+      std::cerr << "reeb " << c.name << ": " << e.what() << " (see reeb " << c.name << " --help)\n";
+      return 2;
+    } catch (const std::exception& e) {
+      std::cerr << "reeb " << c.name << ": error: " << e.what() << "\n";
+      return 1;
+    }
+  }
+  std::cerr << "reeb: unknown command '" << argv[1] << "'\n";
+  print_usage();
+  return 2;
+}
