@@ -1,0 +1,88 @@
+#include "reebkit/features/feature_points.h"
+
+#include "reebkit/core/error.h"
+#include "reebkit/features/critical_points.h"
+#include "reebkit/geodesic/dijkstra.h"
+
+#include <algorithm>
+#include <string>
+#include <tuple>
+
+namespace reebkit {
+
+FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOptions& options) {
+  const Index n = graph.num_vertices();
+  if (n == 0) throw InvalidArgument("extract_feature_points: empty mesh");
+  if (options.start_vertex < 0 || options.start_vertex >= n)
+    throw InvalidArgument("extract_feature_points: start vertex " + std::to_string(options.start_vertex) +
+                          " out of range [0, " + std::to_string(n) + ")");
+  if (!(options.epsilon > 0.0 && options.epsilon <= 1.0))
+    throw InvalidArgument("extract_feature_points: epsilon must lie in (0, 1], got " + std::to_string(options.epsilon));
+
+  FeaturePoints out;
+  DijkstraSolver solver(graph);
+
+  // Eqs. (2) and (4): v_s1 farthest from v_r, v_s2 farthest from v_s1, then
+  // further sweeps until v_s1 and v_s2 are mutually farthest.
+  Index s1 = solver.run({options.start_vertex}).farthest;
+  if (solver.settled().size() != static_cast<std::size_t>(n))
+    throw InvalidArgument("extract_feature_points: the mesh graph is not connected (" +
+                          std::to_string(solver.settled().size()) + " of " + std::to_string(n) +
+                          " vertices reachable); extract each component on its own");
+  const DistanceField& field = solver.run({s1});
+  Index s2 = field.farthest;
+  std::vector<double> f1 = field.distance;
+  solver.run({s2});
+  Index back = field.farthest;  // farthest from s2
+  std::vector<double> f2 = field.distance;
+  out.sweeps = 3;
+  for (int extra = 0; extra < options.max_extra_sweeps && back != s1; ++extra) {
+    // d(s2, back) > d(s1, s2): the pair moves outward along the diameter.
+    s1 = s2;
+    s2 = back;
+    f1.swap(f2);
+    solver.run({s2});
+    back = field.farthest;
+    f2 = field.distance;
+    ++out.sweeps;
+  }
+  out.source1 = s1;
+  out.source2 = s2;
+  out.diameter = f1[static_cast<std::size_t>(s2)];
+
+  // Eq. (5): E1, E2 are the local extrema (figure 3 classification).
+  out.extrema1 = local_extrema(graph, f1);
+  out.extrema2 = local_extrema(graph, f2);
+
+  // Eq. (6): v belongs to F when an extremum of f1 and one of f2 lie within
+  // epsilon of it, and no feature point already taken lies within epsilon.
+  const double radius = options.epsilon * out.diameter;
+  const DijkstraOptions near{radius};
+  const std::vector<double> to_e1 = dijkstra(graph, out.extrema1, near).distance;
+  const std::vector<double> to_e2 = dijkstra(graph, out.extrema2, near).distance;
+  std::vector<Index> candidates;
+  std::set_union(out.extrema1.begin(), out.extrema1.end(), out.extrema2.begin(), out.extrema2.end(),
+                 std::back_inserter(candidates));
+  const auto at = [](const std::vector<double>& a, Index v) { return a[static_cast<std::size_t>(v)]; };
+  candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
+                                  [&](Index v) { return !(at(to_e1, v) < radius && at(to_e2, v) < radius); }),
+                   candidates.end());
+  // Greedy order: extrema of both functions first (gap 0), then the closest
+  // pairs; among equals the more extreme vertex (larger f1 + f2), then the id.
+  std::sort(candidates.begin(), candidates.end(), [&](Index a, Index b) {
+    return std::make_tuple(at(to_e1, a) + at(to_e2, a), -(at(f1, a) + at(f2, a)), a) <
+           std::make_tuple(at(to_e1, b) + at(to_e2, b), -(at(f1, b) + at(f2, b)), b);
+  });
+  std::vector<double> to_features(static_cast<std::size_t>(n), std::numeric_limits<double>::infinity());
+  for (const Index v : candidates) {
+    if (at(to_features, v) <= radius) continue;
+    out.vertices.push_back(v);
+    const DistanceField& ball = solver.run({v}, near);
+    for (const Index w : solver.settled())
+      to_features[static_cast<std::size_t>(w)] =
+          std::min(at(to_features, w), ball.distance[static_cast<std::size_t>(w)]);
+  }
+  return out;
+}
+
+}  // namespace reebkit

@@ -1,0 +1,44 @@
+// Feature points: vertices at the extremities of prominent components,
+// found as the relaxed intersection of the local extrema of two geodesic
+// functions (Tierny et al. 2006, section 4.1.2, Definition 5, eqs. 1-6).
+#pragma once
+
+#include "reebkit/mesh/mesh_graph.h"
+
+#include <vector>
+
+namespace reebkit {
+
+struct FeatureOptions {
+  /// epsilon of eq. (6): two extrema closer than epsilon (normalized geodesic
+  /// distance, i.e. a fraction of `diameter`) are "the same place". Paper: 0.05.
+  double epsilon = 0.05;
+  /// v_r of eq. (2), the vertex the search for the diameter ends starts from.
+  Index start_vertex = 0;
+  /// Eqs. (2)-(4) take v_s1 farthest from v_r and v_s2 farthest from v_s1.
+  /// reebkit repeats that double sweep (v_s1 <- v_s2, v_s2 <- farthest) until
+  /// the two are mutually farthest, at most this many extra passes, so that
+  /// the result does not depend on v_r. 0 = the paper's single sweep.
+  int max_extra_sweeps = 6;
+};
+
+struct FeaturePoints {
+  /// F of eq. (6), in selection order: pairs of coinciding extrema first,
+  /// then by how far apart the E1 and E2 extrema of a candidate lie.
+  std::vector<Index> vertices;
+  Index source1 = kInvalidIndex;  ///< v_s1, origin of f1 (eq. 2)
+  Index source2 = kInvalidIndex;  ///< v_s2, origin of f2 (eq. 4)
+  /// Geodesic distance d(v_s1, v_s2) = max f1, the approximate geodesic
+  /// diameter: every normalized distance delta of the paper is d / diameter.
+  double diameter = 0.0;
+  std::vector<Index> extrema1;  ///< E1: local minima and maxima of f1
+  std::vector<Index> extrema2;  ///< E2: local minima and maxima of f2
+  int sweeps = 0;               ///< full Dijkstra passes spent finding v_s1, v_s2
+};
+
+/// Extracts the feature points of a connected mesh graph.
+/// \pre the graph is connected (one component) and non-empty; throws
+///      InvalidArgument otherwise.
+FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOptions& options = {});
+
+}  // namespace reebkit

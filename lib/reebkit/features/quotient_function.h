@@ -1,0 +1,27 @@
+// The invariant quotient function f_q (Tierny et al. 2006, section 4.1.3,
+// eqs. 7-8): one minus the normalized geodesic distance to the nearest
+// feature point, computed in one multi-source Dijkstra pass.
+#pragma once
+
+#include "reebkit/mesh/mesh_graph.h"
+
+#include <vector>
+
+namespace reebkit {
+
+struct QuotientFunction {
+  /// f_q(v) = 1 - d(v, v_c) / normalization, in [0, 1]; 1 on feature points.
+  std::vector<double> value;
+  /// eq. (8): v_c, as an index into the feature point list.
+  std::vector<Index> nearest_feature;
+  /// max_v d(v, F): the normalization of the hatted delta of eq. (7), chosen
+  /// so that f_q spans [0, 1] exactly (its global minimum is 0) whatever the
+  /// scale of the mesh.
+  double normalization = 0.0;
+};
+
+/// f_q for the given feature points (vertex ids).
+/// \pre the graph is connected and `features` is non-empty.
+QuotientFunction quotient_function(const MeshGraph& graph, const std::vector<Index>& features);
+
+}  // namespace reebkit

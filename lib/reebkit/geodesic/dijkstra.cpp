@@ -1,0 +1,102 @@
+#include "reebkit/geodesic/dijkstra.h"
+
+#include "reebkit/core/error.h"
+
+#include <algorithm>
+#include <functional>
+#include <string>
+
+namespace reebkit {
+
+DijkstraSolver::DijkstraSolver(const MeshGraph& graph) : graph_(graph) {
+  const auto n = static_cast<std::size_t>(graph.num_vertices());
+  field_.distance.assign(n, std::numeric_limits<double>::infinity());
+  field_.nearest_source.assign(n, kInvalidIndex);
+}
+
+const DistanceField& DijkstraSolver::run(const std::vector<Index>& sources, const DijkstraOptions& options) {
+  const Index n = graph_.num_vertices();
+  double* dist = field_.distance.data();
+  Index* nearest = field_.nearest_source.data();
+  if (field_.distance.size() != static_cast<std::size_t>(n)) {  // released before
+    field_.distance.assign(static_cast<std::size_t>(n), std::numeric_limits<double>::infinity());
+    field_.nearest_source.assign(static_cast<std::size_t>(n), kInvalidIndex);
+    dist = field_.distance.data();
+    nearest = field_.nearest_source.data();
+  } else {
+    for (const Index v : touched_) {
+      dist[v] = std::numeric_limits<double>::infinity();
+      nearest[v] = kInvalidIndex;
+    }
+  }
+  touched_.clear();
+  settled_.clear();
+  heap_.clear();
+  field_.farthest = kInvalidIndex;
+  field_.max_distance = 0.0;
+  field_.reached = 0;
+
+  // Binary min-heap of (distance, vertex) with lazy deletion: ties pop by id.
+  const auto push = [this](double d, Index v) {
+    heap_.emplace_back(d, v);
+    std::push_heap(heap_.begin(), heap_.end(), std::greater<>{});
+  };
+  for (std::size_t s = 0; s < sources.size(); ++s) {
+    const Index v = sources[s];
+    if (v < 0 || v >= n)
+      throw InvalidArgument("dijkstra: source vertex " + std::to_string(v) + " out of range [0, " +
+                            std::to_string(n) + ")");
+    if (nearest[v] != kInvalidIndex) continue;  // listed twice
+    dist[v] = 0.0;
+    nearest[v] = static_cast<Index>(s);
+    touched_.push_back(v);
+    push(0.0, v);
+  }
+
+  const Index* offset = graph_.offset.data();
+  const Index* neighbor = graph_.neighbor.data();
+  const double* length = graph_.length.data();
+  while (!heap_.empty()) {
+    std::pop_heap(heap_.begin(), heap_.end(), std::greater<>{});
+    const auto [d, v] = heap_.back();
+    heap_.pop_back();
+    if (d > dist[v]) continue;  // stale entry
+    settled_.push_back(v);
+    if (d > field_.max_distance || field_.farthest == kInvalidIndex ||
+        (d == field_.max_distance && v < field_.farthest)) {
+      field_.max_distance = d;
+      field_.farthest = v;
+    }
+    for (Index i = offset[v]; i < offset[v + 1]; ++i) {
+      const Index w = neighbor[i];
+      const double dw = d + length[i];
+      if (dw < dist[w] && dw <= options.radius) {
+        if (dist[w] == std::numeric_limits<double>::infinity()) touched_.push_back(w);
+        dist[w] = dw;
+        nearest[w] = nearest[v];
+        push(dw, w);
+      }
+    }
+  }
+  field_.reached = static_cast<Index>(settled_.size());
+  return field_;
+}
+
+DistanceField DijkstraSolver::release() {
+  DistanceField out = std::move(field_);
+  field_ = DistanceField{};
+  touched_.clear();
+  return out;
+}
+
+DistanceField dijkstra(const MeshGraph& graph, const std::vector<Index>& sources, const DijkstraOptions& options) {
+  DijkstraSolver solver(graph);
+  solver.run(sources, options);
+  return solver.release();
+}
+
+DistanceField dijkstra(const MeshGraph& graph, Index source, const DijkstraOptions& options) {
+  return dijkstra(graph, std::vector<Index>{source}, options);
+}
+
+}  // namespace reebkit

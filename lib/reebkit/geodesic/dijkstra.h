@@ -1,0 +1,61 @@
+// Geodesic distances approximated by shortest paths on the mesh graph
+// ("Moore-Dijkstra", Tierny et al. 2006, section 4.1.1).
+#pragma once
+
+#include "reebkit/mesh/mesh_graph.h"
+
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace reebkit {
+
+struct DijkstraOptions {
+  /// Vertices farther than this from every source are left unreached
+  /// (distance +inf): the search stops at the radius. +inf = whole mesh.
+  double radius = std::numeric_limits<double>::infinity();
+};
+
+/// Result of a (multi-source) Dijkstra pass.
+struct DistanceField {
+  std::vector<double> distance;       ///< #V, +inf where unreached
+  std::vector<Index> nearest_source;  ///< #V, index into the source list (not a vertex id); -1 where unreached
+  Index farthest = kInvalidIndex;     ///< reached vertex of largest distance, ties by smallest id
+  double max_distance = 0.0;          ///< distance[farthest]
+  Index reached = 0;                  ///< number of vertices within the radius
+};
+
+/// Shortest-path distances from the nearest of `sources` (vertex ids) to
+/// every vertex. Vertices leave the heap in (distance, vertex id) order, so
+/// the result, nearest sources included, is deterministic. O(E log V).
+DistanceField dijkstra(const MeshGraph& graph, const std::vector<Index>& sources,
+                       const DijkstraOptions& options = {});
+
+/// Single-source convenience overload.
+DistanceField dijkstra(const MeshGraph& graph, Index source, const DijkstraOptions& options = {});
+
+/// The same search, for many runs on one graph: buffers are allocated once
+/// and a run resets only the vertices the previous run reached, so a run with
+/// a small radius costs time proportional to the vertices it reaches.
+class DijkstraSolver {
+ public:
+  explicit DijkstraSolver(const MeshGraph& graph);
+
+  /// Runs from `sources`; the returned field stays valid until the next run.
+  const DistanceField& run(const std::vector<Index>& sources, const DijkstraOptions& options = {});
+
+  /// Vertices reached by the last run, in the order they were settled.
+  const std::vector<Index>& settled() const { return settled_; }
+
+  /// Moves the last result out (the solver is left ready for a fresh run).
+  DistanceField release();
+
+ private:
+  const MeshGraph& graph_;
+  DistanceField field_;
+  std::vector<Index> settled_;
+  std::vector<Index> touched_;  // vertices whose distance is finite
+  std::vector<std::pair<double, Index>> heap_;
+};
+
+}  // namespace reebkit

@@ -1,0 +1,141 @@
+#include "reebkit/mesh/shapes.h"
+
+#include "reebkit/core/error.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <unordered_map>
+
+namespace reebkit {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+Mesh from_lists(const std::vector<Vec3>& points, const std::vector<std::array<Index, 3>>& tris) {
+  Mesh mesh;
+  mesh.vertices.resize(static_cast<Eigen::Index>(points.size()), 3);
+  for (std::size_t i = 0; i < points.size(); ++i) mesh.vertices.row(static_cast<Eigen::Index>(i)) = points[i];
+  mesh.triangles.resize(static_cast<Eigen::Index>(tris.size()), 3);
+  for (std::size_t i = 0; i < tris.size(); ++i)
+    for (int k = 0; k < 3; ++k) mesh.triangles(static_cast<Eigen::Index>(i), k) = tris[i][static_cast<std::size_t>(k)];
+  return mesh;
+}
+
+// Quad (a, b, c, d) in counter-clockwise order, split along a-c.
+void add_quad(std::vector<std::array<Index, 3>>& tris, Index a, Index b, Index c, Index d) {
+  tris.push_back({a, b, c});
+  tris.push_back({a, c, d});
+}
+
+}  // namespace
+
+Mesh make_grid(int nx, int ny, double h) {
+  if (nx < 1 || ny < 1) throw InvalidArgument("make_grid: nx and ny must be >= 1");
+  std::vector<Vec3> points;
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) points.emplace_back(h * i, h * j, 0.0);
+  std::vector<std::array<Index, 3>> tris;
+  const auto id = [nx](int i, int j) { return static_cast<Index>(j * (nx + 1) + i); };
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) add_quad(tris, id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+  return from_lists(points, tris);
+}
+
+Mesh make_cube() {
+  std::vector<Vec3> points;
+  for (int k = 0; k < 8; ++k) points.emplace_back(k & 1, (k >> 1) & 1, (k >> 2) & 1);
+  std::vector<std::array<Index, 3>> tris;
+  add_quad(tris, 0, 2, 3, 1);  // z = 0
+  add_quad(tris, 4, 5, 7, 6);  // z = 1
+  add_quad(tris, 0, 1, 5, 4);  // y = 0
+  add_quad(tris, 2, 6, 7, 3);  // y = 1
+  add_quad(tris, 0, 4, 6, 2);  // x = 0
+  add_quad(tris, 1, 3, 7, 5);  // x = 1
+  return from_lists(points, tris);
+}
+
+Mesh make_icosphere(int levels, double radius) {
+  if (levels < 0) throw InvalidArgument("make_icosphere: levels must be >= 0");
+  const double t = (1.0 + std::sqrt(5.0)) / 2.0;
+  std::vector<Vec3> points = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+                              {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  for (auto& p : points) p.normalize();
+  std::vector<std::array<Index, 3>> tris = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                                            {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                            {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                                            {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+  for (int level = 0; level < levels; ++level) {
+    std::unordered_map<std::uint64_t, Index> midpoint;
+    const auto mid = [&](Index a, Index b) {
+      const std::uint64_t key = (static_cast<std::uint64_t>(std::min(a, b)) << 32) | static_cast<std::uint32_t>(std::max(a, b));
+      const auto [it, inserted] = midpoint.try_emplace(key, static_cast<Index>(points.size()));
+      if (inserted) points.push_back((points[static_cast<std::size_t>(a)] + points[static_cast<std::size_t>(b)]).normalized());
+      return it->second;
+    };
+    std::vector<std::array<Index, 3>> finer;
+    finer.reserve(tris.size() * 4);
+    for (const auto& [a, b, c] : tris) {
+      const Index ab = mid(a, b), bc = mid(b, c), ca = mid(c, a);
+      finer.push_back({a, ab, ca});
+      finer.push_back({b, bc, ab});
+      finer.push_back({c, ca, bc});
+      finer.push_back({ab, bc, ca});
+    }
+    tris.swap(finer);
+  }
+  for (auto& p : points) p *= radius;
+  return from_lists(points, tris);
+}
+
+Mesh make_torus(int major, int minor, double R, double r) {
+  if (major < 3 || minor < 3) throw InvalidArgument("make_torus: major and minor must be >= 3");
+  std::vector<Vec3> points;
+  for (int i = 0; i < major; ++i) {
+    const double u = 2 * kPi * i / major;
+    for (int j = 0; j < minor; ++j) {
+      const double w = 2 * kPi * j / minor;
+      points.emplace_back((R + r * std::cos(w)) * std::cos(u), (R + r * std::cos(w)) * std::sin(u), r * std::sin(w));
+    }
+  }
+  std::vector<std::array<Index, 3>> tris;
+  const auto id = [major, minor](int i, int j) { return static_cast<Index>((i % major) * minor + (j % minor)); };
+  for (int i = 0; i < major; ++i)
+    for (int j = 0; j < minor; ++j) add_quad(tris, id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+  return from_lists(points, tris);
+}
+
+std::vector<Vec3> star_arm_directions(const StarOptions& options) {
+  if (options.arms < 1) throw InvalidArgument("make_star: arms must be >= 1");
+  std::vector<Vec3> dirs;
+  const double golden = kPi * (3.0 - std::sqrt(5.0));
+  const int n = options.arms;
+  for (int i = 0; i < n; ++i) {
+    // Fibonacci spiral; a single arm points up.
+    const double z = n == 1 ? 1.0 : 1.0 - 2.0 * (i + 0.5) / n;
+    const double rho = std::sqrt(std::max(0.0, 1.0 - z * z));
+    const double phi = golden * i + options.twist;
+    dirs.emplace_back(rho * std::cos(phi), rho * std::sin(phi), z);
+  }
+  return dirs;
+}
+
+Mesh make_star(const StarOptions& options) {
+  const std::vector<Vec3> dirs = star_arm_directions(options);
+  Mesh mesh = make_icosphere(options.levels);
+  const double cos_width = std::cos(options.arm_width);
+  for (Eigen::Index v = 0; v < mesh.vertices.rows(); ++v) {
+    const Vec3 u = mesh.vertices.row(v).transpose();
+    double radius = 1.0;
+    for (const Vec3& d : dirs) {
+      // Smooth bump: 0 outside the arm's cone, arm_length at its axis.
+      const double s = std::max(0.0, (u.dot(d) - cos_width) / (1.0 - cos_width));
+      radius += options.arm_length * s * s * (3.0 - 2.0 * s);
+    }
+    mesh.vertices.row(v) = (radius * u).transpose();
+  }
+  return mesh;
+}
+
+}  // namespace reebkit
