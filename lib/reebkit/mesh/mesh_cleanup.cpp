@@ -1,0 +1,370 @@
+#include "reebkit/mesh/mesh_cleanup.h"
+
+#include "reebkit/core/error.h"
+#include "reebkit/mesh/mesh_topology.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+#include <sstream>
+#include <tuple>
+#include <utility>
+
+namespace reebkit {
+
+namespace {
+
+Vec3 point(const Points& points, Index v) { return points.row(v).transpose(); }
+
+std::string source_label(const std::string& source) { return source.empty() ? "<memory>" : source; }
+
+std::string count_of(Index n, const std::string& singular, const std::string& plural) {
+  return std::to_string(n) + " " + (n == 1 ? singular : plural);
+}
+
+std::string percent(double part, double whole) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f%%", whole > 0 ? 100.0 * part / whole : 0.0);
+  return text;
+}
+
+/// Throws InvalidMeshError unless the soup has vertices, polygons, finite
+/// coordinates and in-range indices (InvalidArgument for a malformed CSR).
+void check_soup(const PolygonSoup& soup) {
+  if (soup.face_offset.empty() || soup.face_offset.front() != 0 ||
+      soup.face_offset.back() != static_cast<Index>(soup.face_vertex.size()) ||
+      !std::is_sorted(soup.face_offset.begin(), soup.face_offset.end()))
+    throw InvalidArgument("clean_mesh(" + source_label(soup.source) +
+                          "): face_offset is not a CSR offset array over face_vertex");
+  const Index num_vertices = soup.num_vertices();
+  if (num_vertices == 0) throw InvalidMeshError(soup.source, "no vertices: the file holds no vertices");
+  if (soup.num_polygons() == 0)
+    throw InvalidMeshError(soup.source, "no faces: the file holds " + count_of(num_vertices, "vertex", "vertices") +
+                                            " and no polygons (a point cloud?)");
+  for (Index v = 0; v < num_vertices; ++v) {
+    if (soup.vertices.row(v).allFinite()) continue;
+    std::ostringstream problem;
+    problem << "vertex " << v << " has a non-finite coordinate (" << soup.vertices(v, 0) << ", "
+            << soup.vertices(v, 1) << ", " << soup.vertices(v, 2) << ")";
+    throw InvalidMeshError(soup.source, problem.str());
+  }
+  for (Index p = 0; p < soup.num_polygons(); ++p) {
+    for (Index i = soup.face_offset[p]; i < soup.face_offset[p + 1]; ++i) {
+      const Index v = soup.face_vertex[i];
+      if (v < 0 || v >= num_vertices)
+        throw InvalidMeshError(soup.source, "polygon " + std::to_string(p) + " refers to vertex " +
+                                                std::to_string(v) + ", but there are " +
+                                                count_of(num_vertices, "vertex", "vertices"));
+    }
+  }
+}
+
+/// representative[v] = smallest vertex at exactly v's position (== on each
+/// coordinate). Returns the number of vertices mapped to another one.
+Index merge_coincident(const Points& vertices, std::vector<Index>& representative) {
+  std::vector<Index> order(representative.size());
+  std::iota(order.begin(), order.end(), Index{0});
+  const auto position = [&](Index v) { return std::make_tuple(vertices(v, 0), vertices(v, 1), vertices(v, 2)); };
+  std::sort(order.begin(), order.end(), [&](Index a, Index b) {
+    return std::make_pair(position(a), a) < std::make_pair(position(b), b);
+  });
+  Index merged = 0;
+  for (std::size_t i = 1; i < order.size(); ++i) {
+    if (position(order[i]) != position(order[i - 1])) continue;
+    representative[order[i]] = representative[order[i - 1]];
+    ++merged;
+  }
+  return merged;
+}
+
+/// Ear clipping of one polygon in the plane of its Newell normal. Scratch
+/// buffers are members so that a soup of many polygons allocates once.
+class PolygonTriangulator {
+ public:
+  /// Appends the n - 2 triangles of `polygon` (n >= 3 distinct vertices) to
+  /// `out`, each in the polygon's orientation.
+  void triangulate(const std::vector<Index>& polygon, const Points& points, std::vector<Index>& out) {
+    const auto n = static_cast<Index>(polygon.size());
+    if (n == 3 || !project(polygon, points) || is_convex()) {
+      for (Index i = 1; i + 1 < n; ++i) out.insert(out.end(), {polygon[0], polygon[i], polygon[i + 1]});
+      return;
+    }
+    next_.resize(polygon.size());
+    prev_.resize(polygon.size());
+    for (Index i = 0; i < n; ++i) {
+      next_[i] = (i + 1) % n;
+      prev_[i] = (i + n - 1) % n;
+    }
+    Index corner = 0;
+    Index misses = 0;  // consecutive corners that were not ears
+    for (Index remaining = n; remaining > 3;) {
+      // No ear in a whole round (a self-overlapping projection): clip anyway.
+      if (is_ear(corner) || misses > remaining) {
+        out.insert(out.end(), {polygon[prev_[corner]], polygon[corner], polygon[next_[corner]]});
+        next_[prev_[corner]] = next_[corner];
+        prev_[next_[corner]] = prev_[corner];
+        corner = next_[corner];
+        --remaining;
+        misses = 0;
+      } else {
+        corner = next_[corner];
+        ++misses;
+      }
+    }
+    out.insert(out.end(), {polygon[prev_[corner]], polygon[corner], polygon[next_[corner]]});
+  }
+
+ private:
+  /// 2D coordinates in the plane most orthogonal to the Newell normal,
+  /// oriented so that the polygon turns counter-clockwise. False when the
+  /// polygon has no area (any triangulation is as good as any other).
+  bool project(const std::vector<Index>& polygon, const Points& points) {
+    Vec3 normal = Vec3::Zero();
+    for (std::size_t i = 0; i < polygon.size(); ++i)
+      normal += point(points, polygon[i]).cross(point(points, polygon[(i + 1) % polygon.size()]));
+    Eigen::Index axis = 0;
+    if (normal.cwiseAbs().maxCoeff(&axis) == 0) return false;
+    int u = static_cast<int>(axis + 1) % 3;
+    int v = static_cast<int>(axis + 2) % 3;
+    if (normal[axis] < 0) std::swap(u, v);
+    xy_.resize(polygon.size());
+    for (std::size_t i = 0; i < polygon.size(); ++i) xy_[i] = {points(polygon[i], u), points(polygon[i], v)};
+    return true;
+  }
+
+  /// Twice the signed area of the 2D triangle (a, b, c); > 0 when counter-clockwise.
+  double turn(Index a, Index b, Index c) const {
+    return (xy_[b][0] - xy_[a][0]) * (xy_[c][1] - xy_[a][1]) - (xy_[b][1] - xy_[a][1]) * (xy_[c][0] - xy_[a][0]);
+  }
+
+  bool is_convex() const {
+    const auto n = static_cast<Index>(xy_.size());
+    for (Index i = 0; i < n; ++i)
+      if (turn((i + n - 1) % n, i, (i + 1) % n) < 0) return false;
+    return true;
+  }
+
+  /// A strictly convex corner whose triangle holds no other remaining corner
+  /// (on its border counts as inside).
+  bool is_ear(Index corner) const {
+    const Index a = prev_[corner];
+    const Index c = next_[corner];
+    if (turn(a, corner, c) <= 0) return false;
+    for (Index r = next_[c]; r != a; r = next_[r])
+      if (turn(a, corner, r) >= 0 && turn(corner, c, r) >= 0 && turn(c, a, r) >= 0) return false;
+    return true;
+  }
+
+  std::vector<std::array<double, 2>> xy_;
+  std::vector<Index> next_;
+  std::vector<Index> prev_;
+};
+
+/// Triangles of the soup after welding, collapsing and degenerate removal, as
+/// a flat list of vertex triples in file order.
+std::vector<Index> triangulate_soup(const PolygonSoup& soup, const std::vector<Index>& representative,
+                                    CleanupReport& report) {
+  const std::size_t corners = soup.face_vertex.size();
+  const std::size_t two_per_polygon = 2 * static_cast<std::size_t>(soup.num_polygons());
+  std::vector<Index> triangles;
+  triangles.reserve(3 * (corners > two_per_polygon ? corners - two_per_polygon : 0));  // n - 2 per polygon
+  std::vector<Index> polygon;
+  std::vector<Index> sorted;
+  PolygonTriangulator triangulator;
+  for (Index p = 0; p < soup.num_polygons(); ++p) {
+    polygon.clear();
+    for (Index i = soup.face_offset[p]; i < soup.face_offset[p + 1]; ++i) {
+      const Index v = representative[soup.face_vertex[i]];
+      if (polygon.empty() || polygon.back() != v) polygon.push_back(v);
+    }
+    while (polygon.size() > 1 && polygon.front() == polygon.back()) polygon.pop_back();
+    sorted.assign(polygon.begin(), polygon.end());
+    std::sort(sorted.begin(), sorted.end());
+    if (polygon.size() < 3 || std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
+      ++report.degenerate_faces_dropped;
+      continue;
+    }
+    if (polygon.size() > 3) {
+      ++report.polygons_triangulated;
+      report.triangles_created += static_cast<Index>(polygon.size()) - 2;
+    }
+    triangulator.triangulate(polygon, soup.vertices, triangles);
+  }
+  return triangles;
+}
+
+/// Removes every triangle whose vertex set equals that of an earlier one.
+/// Returns how many were removed.
+Index drop_duplicate_triangles(std::vector<Index>& triangles) {
+  const std::size_t count = triangles.size() / 3;
+  std::vector<std::array<Index, 4>> keys(count);  // sorted vertex ids, then triangle
+  for (std::size_t t = 0; t < count; ++t) {
+    keys[t] = {triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2], static_cast<Index>(t)};
+    std::sort(keys[t].begin(), keys[t].begin() + 3);
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<bool> duplicate(count, false);
+  for (std::size_t i = 1; i < count; ++i)
+    duplicate[keys[i][3]] = std::equal(keys[i].begin(), keys[i].begin() + 3, keys[i - 1].begin());
+  std::size_t kept = 0;
+  for (std::size_t t = 0; t < count; ++t) {
+    if (duplicate[t]) continue;
+    std::copy_n(triangles.begin() + static_cast<std::ptrdiff_t>(3 * t), 3,
+                triangles.begin() + static_cast<std::ptrdiff_t>(3 * kept));
+    ++kept;
+  }
+  triangles.resize(3 * kept);
+  return static_cast<Index>(count - kept);
+}
+
+/// The mesh on the referenced soup vertices (in soup order) of `triangles`.
+Mesh compact_mesh(const PolygonSoup& soup, const std::vector<Index>& triangles) {
+  std::vector<Index> new_index(static_cast<std::size_t>(soup.num_vertices()), kInvalidIndex);
+  for (const Index v : triangles) new_index[v] = 0;
+  Mesh mesh;
+  mesh.source = soup.source;
+  for (Index v = 0; v < soup.num_vertices(); ++v) {
+    if (new_index[v] == kInvalidIndex) continue;
+    new_index[v] = static_cast<Index>(mesh.source_vertex.size());
+    mesh.source_vertex.push_back(v);
+  }
+  mesh.vertices.resize(static_cast<Eigen::Index>(mesh.source_vertex.size()), 3);
+  for (Index v = 0; v < mesh.num_vertices(); ++v) mesh.vertices.row(v) = soup.vertices.row(mesh.source_vertex[v]);
+  mesh.triangles.resize(static_cast<Eigen::Index>(triangles.size() / 3), 3);
+  for (Index t = 0; t < mesh.num_triangles(); ++t)
+    for (int k = 0; k < 3; ++k) mesh.triangles(t, k) = new_index[triangles[3 * t + k]];
+  return mesh;
+}
+
+/// Splits `mesh` by `labels` into the components listed in `keep`, in that order.
+std::vector<Mesh> split_components(const Mesh& mesh, const ComponentLabels& labels, const std::vector<Index>& keep) {
+  std::vector<Index> part_of_component(static_cast<std::size_t>(labels.count), kInvalidIndex);
+  for (std::size_t i = 0; i < keep.size(); ++i) part_of_component[keep[i]] = static_cast<Index>(i);
+  const auto part_of_vertex = [&](Index v) { return part_of_component[labels.vertex_component[v]]; };
+
+  std::vector<Mesh> parts(keep.size());
+  std::vector<Index> local(static_cast<std::size_t>(mesh.num_vertices()), kInvalidIndex);
+  for (Index v = 0; v < mesh.num_vertices(); ++v) {
+    const Index s = part_of_vertex(v);
+    if (s == kInvalidIndex) continue;
+    local[v] = static_cast<Index>(parts[s].source_vertex.size());
+    parts[s].source_vertex.push_back(mesh.source_vertex[v]);
+  }
+  std::vector<Index> triangle_count(keep.size(), 0);
+  for (Index t = 0; t < mesh.num_triangles(); ++t) {
+    const Index s = part_of_vertex(mesh.triangles(t, 0));
+    if (s != kInvalidIndex) ++triangle_count[s];
+  }
+  for (std::size_t s = 0; s < parts.size(); ++s) {
+    parts[s].source = mesh.source;
+    parts[s].vertices.resize(static_cast<Eigen::Index>(parts[s].source_vertex.size()), 3);
+    parts[s].triangles.resize(triangle_count[s], 3);
+  }
+  for (Index v = 0; v < mesh.num_vertices(); ++v) {
+    const Index s = part_of_vertex(v);
+    if (s != kInvalidIndex) parts[s].vertices.row(local[v]) = mesh.vertices.row(v);
+  }
+  std::vector<Index> filled(keep.size(), 0);
+  for (Index t = 0; t < mesh.num_triangles(); ++t) {
+    const Index s = part_of_vertex(mesh.triangles(t, 0));
+    if (s == kInvalidIndex) continue;
+    for (int k = 0; k < 3; ++k) parts[s].triangles(filled[s], k) = local[mesh.triangles(t, k)];
+    ++filled[s];
+  }
+  return parts;
+}
+
+double triangle_area(const Mesh& mesh, Index t) {
+  const Vec3 a = point(mesh.vertices, mesh.triangles(t, 0));
+  return 0.5 * (point(mesh.vertices, mesh.triangles(t, 1)) - a).cross(point(mesh.vertices, mesh.triangles(t, 2)) - a).norm();
+}
+
+}  // namespace
+
+CleanedMesh clean_mesh(const PolygonSoup& soup, const CleanupOptions& options) {
+  check_soup(soup);
+  CleanedMesh result;
+  CleanupReport& report = result.report;
+  const std::string where = source_label(soup.source) + ": ";
+  report.input_vertices = soup.num_vertices();
+  report.input_polygons = soup.num_polygons();
+
+  std::vector<Index> representative(static_cast<std::size_t>(soup.num_vertices()));
+  std::iota(representative.begin(), representative.end(), Index{0});
+  if (options.merge_coincident_vertices)
+    report.coincident_vertices_merged = merge_coincident(soup.vertices, representative);
+
+  std::vector<Index> triangles = triangulate_soup(soup, representative, report);
+  if (triangles.empty())
+    throw InvalidMeshError(soup.source, "no usable triangle: all " +
+                                            count_of(soup.num_polygons(), "polygon is", "polygons are") +
+                                            " degenerate (fewer than 3 distinct vertices, or a repeated vertex)");
+  if (report.degenerate_faces_dropped > 0)
+    report.warnings.push_back(where + "dropped " +
+                              count_of(report.degenerate_faces_dropped, "degenerate polygon", "degenerate polygons") +
+                              " (fewer than 3 distinct vertices, or a repeated vertex)");
+  report.duplicate_faces_dropped = drop_duplicate_triangles(triangles);
+  if (report.duplicate_faces_dropped > 0)
+    report.warnings.push_back(where + "dropped " +
+                              count_of(report.duplicate_faces_dropped, "duplicate triangle", "duplicate triangles") +
+                              " (same vertices as an earlier triangle)");
+
+  Mesh mesh = compact_mesh(soup, triangles);
+  report.unreferenced_vertices_dropped =
+      report.input_vertices - report.coincident_vertices_merged - mesh.num_vertices();
+
+  const MeshTopology topology = analyze_topology(mesh);
+  report.boundary_edges = topology.boundary_edges;
+  report.boundary_loops = topology.boundary_loops;
+  report.non_manifold_edges = topology.non_manifold_edges;
+  report.non_manifold_vertices = topology.non_manifold_vertices;
+  report.components = topology.components;
+  if (topology.non_manifold_edges > 0)
+    report.warnings.push_back(where + count_of(topology.non_manifold_edges, "non-manifold edge", "non-manifold edges") +
+                              " (used by more than 2 triangles), kept as is");
+  if (topology.non_manifold_vertices > 0)
+    report.warnings.push_back(
+        where + count_of(topology.non_manifold_vertices, "non-manifold vertex", "non-manifold vertices") +
+        " (incident triangles form more than one fan), kept as is");
+
+  if (topology.components == 1) {
+    result.components.push_back(std::move(mesh));
+    return result;
+  }
+
+  // Order components by area, then triangle count, then smallest source
+  // vertex (component ids already follow it).
+  const ComponentLabels labels = connected_components(mesh.triangles, mesh.num_vertices());
+  std::vector<double> area(static_cast<std::size_t>(labels.count), 0.0);
+  std::vector<Index> size(static_cast<std::size_t>(labels.count), 0);
+  for (Index t = 0; t < mesh.num_triangles(); ++t) {
+    const Index c = labels.vertex_component[mesh.triangles(t, 0)];
+    area[c] += triangle_area(mesh, t);
+    ++size[c];
+  }
+  std::vector<Index> order(static_cast<std::size_t>(labels.count));
+  std::iota(order.begin(), order.end(), Index{0});
+  std::sort(order.begin(), order.end(), [&](Index a, Index b) {
+    return std::make_tuple(-area[a], -size[a], a) < std::make_tuple(-area[b], -size[b], b);
+  });
+  if (!options.keep_all_components) {
+    const double total_area = std::accumulate(area.begin(), area.end(), 0.0);
+    const Index kept = order.front();
+    report.components_dropped = labels.count - 1;
+    report.warnings.push_back(
+        where + "kept the largest of " + std::to_string(labels.count) + " connected components (" +
+        count_of(size[kept], "triangle", "triangles") + ", " + percent(area[kept], total_area) +
+        " of the area); dropped " + count_of(report.components_dropped, "component", "components") + " with " +
+        count_of(mesh.num_triangles() - size[kept], "triangle", "triangles") + " (" +
+        percent(total_area - area[kept], total_area) + " of the area); set keep_all_components to keep them");
+    order.resize(1);
+  }
+  result.components = split_components(mesh, labels, order);
+  return result;
+}
+
+}  // namespace reebkit
