@@ -129,9 +129,10 @@ Mesh make_star(const StarOptions& options) {
     const Vec3 u = mesh.vertices.row(v).transpose();
     double radius = 1.0;
     for (const Vec3& d : dirs) {
-      // Smooth bump: 0 outside the arm's cone, arm_length at its axis.
-      const double s = std::max(0.0, (u.dot(d) - cos_width) / (1.0 - cos_width));
-      radius += options.arm_length * s * s * (3.0 - 2.0 * s);
+      // 0 outside the arm's cone, arm_length on its axis. Linear in cos(angle),
+      // so the tip is a small rounded cap (a flat-topped profile would put the
+      // extrema of different distance functions on opposite rims of the cap).
+      radius += options.arm_length * std::max(0.0, (u.dot(d) - cos_width) / (1.0 - cos_width));
     }
     mesh.vertices.row(v) = (radius * u).transpose();
   }

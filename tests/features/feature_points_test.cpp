@@ -1,0 +1,150 @@
+#include "reebkit/features/feature_points.h"
+
+#include "reebkit/core/error.h"
+#include "reebkit/geodesic/dijkstra.h"
+#include "reebkit/mesh/shapes.h"
+#include "reebkit/mesh/transform.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace reebkit {
+namespace {
+
+StarOptions star(int arms, int levels = 4) {
+  StarOptions o;
+  o.arms = arms;
+  o.levels = levels;
+  return o;
+}
+
+std::vector<Index> sorted(std::vector<Index> v) {
+  std::sort(v.begin(), v.end());
+  return v;
+}
+
+// The vertex of the mesh farthest out along each arm direction.
+std::vector<Index> arm_tips(const Mesh& mesh, const StarOptions& options) {
+  std::vector<Index> tips;
+  for (const Vec3& d : star_arm_directions(options)) {
+    Index best = 0;
+    for (Index v = 1; v < mesh.num_vertices(); ++v)
+      if (mesh.vertices.row(v).dot(d) > mesh.vertices.row(best).dot(d)) best = v;
+    tips.push_back(best);
+  }
+  return tips;
+}
+
+class StarArms : public ::testing::TestWithParam<int> {};
+
+TEST_P(StarArms, OneFeaturePointPerArmTip) {
+  const StarOptions options = star(GetParam());
+  const Mesh mesh = make_star(options);
+  const MeshGraph g = build_mesh_graph(mesh);
+  const FeaturePoints fp = extract_feature_points(g);
+  ASSERT_EQ(fp.vertices.size(), static_cast<std::size_t>(options.arms));
+  // Each tip has exactly one feature point within epsilon (normalized) of it.
+  const double radius = 0.05 * fp.diameter;
+  for (const Index tip : arm_tips(mesh, options)) {
+    const DistanceField d = dijkstra(g, tip);
+    const auto near = std::count_if(fp.vertices.begin(), fp.vertices.end(),
+                                    [&](Index f) { return d.distance[f] < radius; });
+    EXPECT_EQ(near, 1) << "tip " << tip;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Counts, StarArms, ::testing::Values(2, 3, 4, 5, 6, 8, 10, 12, 16));
+
+TEST(FeaturePoints, SingleArmShapeHasTwoEnds) {
+  // One arm on a ball: an elongated shape whose two ends are both extremities.
+  const FeaturePoints fp = extract_feature_points(build_mesh_graph(make_star(star(1))));
+  EXPECT_EQ(fp.vertices.size(), 2u);
+}
+
+TEST(FeaturePoints, DiameterEndsAreMutuallyFarthestFeaturePoints) {
+  const MeshGraph g = build_mesh_graph(make_star(star(7)));
+  const FeaturePoints fp = extract_feature_points(g);
+  EXPECT_EQ(dijkstra(g, fp.source1).farthest, fp.source2);
+  EXPECT_EQ(dijkstra(g, fp.source2).farthest, fp.source1);
+  EXPECT_DOUBLE_EQ(dijkstra(g, fp.source1).max_distance, fp.diameter);
+  const auto f = sorted(fp.vertices);
+  EXPECT_TRUE(std::binary_search(f.begin(), f.end(), fp.source1));
+  EXPECT_TRUE(std::binary_search(f.begin(), f.end(), fp.source2));
+}
+
+TEST(FeaturePoints, FeaturePointsAreMoreThanEpsilonApart) {
+  const MeshGraph g = build_mesh_graph(make_star(star(12)));
+  const FeaturePoints fp = extract_feature_points(g);
+  for (const Index a : fp.vertices) {
+    const DistanceField d = dijkstra(g, a);
+    for (const Index b : fp.vertices) {
+      if (a != b) {
+        EXPECT_GT(d.distance[b], 0.05 * fp.diameter);
+      }
+    }
+  }
+}
+
+TEST(FeaturePoints, InvariantToRotationTranslationAndScale) {
+  const Mesh mesh = make_star(star(6));
+  const auto reference = sorted(extract_feature_points(build_mesh_graph(mesh)).vertices);
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    Similarity t;
+    t.rotation = random_rotation(seed);
+    t.scale = 0.01 * static_cast<double>(seed * seed * seed * 10);  // 0.1 .. 6.4
+    t.translation = Vec3(3.0, -7.0, 1e3) * static_cast<double>(seed);
+    const auto moved = sorted(extract_feature_points(build_mesh_graph(transformed(mesh, t))).vertices);
+    EXPECT_EQ(moved, reference) << "seed " << seed;
+  }
+}
+
+// Number of points of `a` with no point of `b` within `radius`.
+int unmatched(const MeshGraph& g, const std::vector<Index>& a, const std::vector<Index>& b, double radius) {
+  const DistanceField d = dijkstra(g, b);
+  return static_cast<int>(std::count_if(a.begin(), a.end(), [&](Index v) { return d.distance[v] >= radius; }));
+}
+
+TEST(FeaturePoints, StartVertexDoesNotChangeTheResult) {
+  // The star is symmetric, so several vertex pairs tie for the diameter and
+  // the vertex chosen on a tip may move to a neighbour; the set of tips found
+  // must not change.
+  const Mesh mesh = make_star(star(9));
+  const MeshGraph g = build_mesh_graph(mesh);
+  const FeaturePoints reference = extract_feature_points(g);
+  for (Index start = 1; start < mesh.num_vertices(); start += mesh.num_vertices() / 17) {
+    FeatureOptions options;
+    options.start_vertex = start;
+    const FeaturePoints fp = extract_feature_points(g, options);
+    ASSERT_EQ(fp.vertices.size(), reference.vertices.size()) << "start " << start;
+    EXPECT_EQ(unmatched(g, fp.vertices, reference.vertices, 0.05 * reference.diameter), 0) << "start " << start;
+  }
+}
+
+TEST(FeaturePoints, LargerEpsilonMergesNearbyExtremities) {
+  // With epsilon near 1 everything is "one place": a single feature point.
+  const MeshGraph g = build_mesh_graph(make_star(star(5)));
+  FeatureOptions options;
+  options.epsilon = 1.0;
+  EXPECT_EQ(extract_feature_points(g, options).vertices.size(), 1u);
+}
+
+TEST(FeaturePoints, RejectsBadInput) {
+  const MeshGraph g = build_mesh_graph(make_cube());
+  FeatureOptions bad_start;
+  bad_start.start_vertex = 8;
+  EXPECT_THROW(extract_feature_points(g, bad_start), InvalidArgument);
+  FeatureOptions bad_eps;
+  bad_eps.epsilon = 0.0;
+  EXPECT_THROW(extract_feature_points(g, bad_eps), InvalidArgument);
+  // Two disjoint triangles: not connected.
+  Mesh two;
+  two.vertices.resize(6, 3);
+  two.vertices << 0, 0, 0, 1, 0, 0, 0, 1, 0, 5, 0, 0, 6, 0, 0, 5, 1, 0;
+  two.triangles.resize(2, 3);
+  two.triangles << 0, 1, 2, 3, 4, 5;
+  EXPECT_THROW(extract_feature_points(build_mesh_graph(two)), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace reebkit

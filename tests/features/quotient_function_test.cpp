@@ -1,0 +1,67 @@
+#include "reebkit/features/quotient_function.h"
+
+#include "reebkit/core/error.h"
+#include "reebkit/features/feature_points.h"
+#include "reebkit/geodesic/dijkstra.h"
+#include "reebkit/mesh/shapes.h"
+#include "reebkit/mesh/transform.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace reebkit {
+namespace {
+
+TEST(QuotientFunction, IsOneMinusNormalizedDistanceToNearestFeature) {
+  const MeshGraph g = build_mesh_graph(make_torus(40, 14));
+  const std::vector<Index> features = {0, 211, 333};
+  const QuotientFunction fq = quotient_function(g, features);
+  std::vector<DistanceField> single;
+  for (const Index f : features) single.push_back(dijkstra(g, f));
+  double max_min = 0;
+  for (Index v = 0; v < g.num_vertices(); ++v) {
+    double m = single[0].distance[v];
+    for (const auto& s : single) m = std::min(m, s.distance[v]);
+    max_min = std::max(max_min, m);
+  }
+  EXPECT_DOUBLE_EQ(fq.normalization, max_min);
+  for (Index v = 0; v < g.num_vertices(); ++v) {
+    const double nearest = single[fq.nearest_feature[v]].distance[v];
+    EXPECT_NEAR(fq.value[v], 1.0 - nearest / max_min, 1e-12);
+    for (const auto& s : single) EXPECT_LE(nearest, s.distance[v]);  // eq. (8): the closest one
+  }
+}
+
+TEST(QuotientFunction, SpansZeroToOneWithOnesAtFeatures) {
+  const MeshGraph g = build_mesh_graph(make_star(StarOptions{}));
+  const FeaturePoints fp = extract_feature_points(g);
+  const QuotientFunction fq = quotient_function(g, fp.vertices);
+  EXPECT_DOUBLE_EQ(*std::min_element(fq.value.begin(), fq.value.end()), 0.0);
+  EXPECT_DOUBLE_EQ(*std::max_element(fq.value.begin(), fq.value.end()), 1.0);
+  for (std::size_t i = 0; i < fp.vertices.size(); ++i) {
+    EXPECT_EQ(fq.value[fp.vertices[i]], 1.0);
+    EXPECT_EQ(fq.nearest_feature[fp.vertices[i]], static_cast<Index>(i));
+  }
+}
+
+TEST(QuotientFunction, InvariantToSimilarityTransforms) {
+  const Mesh mesh = make_star(StarOptions{});
+  const MeshGraph g = build_mesh_graph(mesh);
+  const FeaturePoints fp = extract_feature_points(g);
+  const QuotientFunction reference = quotient_function(g, fp.vertices);
+  Similarity t;
+  t.rotation = random_rotation(42);
+  t.scale = 37.5;
+  t.translation = Vec3(-4, 2, 9);
+  const QuotientFunction moved = quotient_function(build_mesh_graph(transformed(mesh, t)), fp.vertices);
+  for (Index v = 0; v < g.num_vertices(); ++v) EXPECT_NEAR(moved.value[v], reference.value[v], 1e-9);
+  EXPECT_NEAR(moved.normalization, 37.5 * reference.normalization, 1e-9);
+}
+
+TEST(QuotientFunction, RejectsEmptyFeatureList) {
+  EXPECT_THROW(quotient_function(build_mesh_graph(make_cube()), {}), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace reebkit
