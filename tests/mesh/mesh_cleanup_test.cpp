@@ -99,6 +99,17 @@ TEST(CleanMesh, NonConvexPolygonIsEarClipped) {
   EXPECT_EQ(analyze_topology(mesh).boundary_edges, 6);
 }
 
+TEST(CleanMesh, CornersOnAStraightEdgeGiveNoFlatTriangle) {
+  // Vertex 1 lies on the edge from 0 to 2: a fan from vertex 0 would make
+  // the flat triangle (0, 1, 2).
+  const CleanedMesh cleaned =
+      clean_mesh(make_soup({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}}, {{0, 1, 2, 3, 4}}));
+  const Mesh& mesh = cleaned.components[0];
+  ASSERT_EQ(mesh.num_triangles(), 3);
+  expect_faces_up(mesh);
+  EXPECT_DOUBLE_EQ(total_area(mesh), 2.0);
+}
+
 TEST(CleanMesh, TriangulationKeepsThePolygonOrientation) {
   // The L shape in the x = 0 plane, traversed clockwise seen from +x.
   const CleanedMesh cleaned = clean_mesh(make_soup(

@@ -87,6 +87,14 @@ Mesh without(const Mesh& mesh, const std::vector<Index>& removed) {
   return result;
 }
 
+void expect_counts(const MeshTopology& topology, Index vertices, Index edges, Index faces, Index components) {
+  EXPECT_EQ(topology.vertices, vertices);
+  EXPECT_EQ(topology.edges, edges);
+  EXPECT_EQ(topology.faces, faces);
+  EXPECT_EQ(topology.components, components);
+  EXPECT_EQ(topology.euler_characteristic, vertices - edges + faces);
+}
+
 void expect_closed_surface(const MeshTopology& topology, int genus) {
   EXPECT_TRUE(topology.closed);
   EXPECT_TRUE(topology.manifold);
@@ -100,18 +108,13 @@ void expect_closed_surface(const MeshTopology& topology, int genus) {
 
 TEST(AnalyzeTopology, Tetrahedron) {
   const MeshTopology topology = analyze_topology(tetrahedron());
-  EXPECT_EQ(topology.vertices, 4);
-  EXPECT_EQ(topology.edges, 6);
-  EXPECT_EQ(topology.faces, 4);
-  EXPECT_EQ(topology.euler_characteristic, 2);
-  EXPECT_EQ(topology.components, 1);
+  expect_counts(topology, 4, 6, 4, 1);
   expect_closed_surface(topology, 0);
 }
 
 TEST(AnalyzeTopology, Cube) {
   const MeshTopology topology = analyze_topology(cube());
-  EXPECT_EQ(topology.edges, 18);
-  EXPECT_EQ(topology.euler_characteristic, 2);
+  expect_counts(topology, 8, 18, 12, 1);
   expect_closed_surface(topology, 0);
 }
 
@@ -124,11 +127,8 @@ TEST(AnalyzeTopology, InconsistentOrientationDoesNotChangeTheGenus) {
 
 TEST(AnalyzeTopology, TorusHasGenusOne) {
   const MeshTopology topology = analyze_topology(torus(12, 8));
-  EXPECT_EQ(topology.vertices, 96);
-  EXPECT_EQ(topology.faces, 192);
-  EXPECT_EQ(topology.edges, 288);
+  expect_counts(topology, 96, 288, 192, 1);
   EXPECT_EQ(topology.euler_characteristic, 0);
-  EXPECT_EQ(topology.components, 1);
   expect_closed_surface(topology, 1);
 }
 

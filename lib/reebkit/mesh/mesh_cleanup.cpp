@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <cstdio>
 #include <numeric>
 #include <sstream>
@@ -89,7 +88,7 @@ class PolygonTriangulator {
   /// `out`, each in the polygon's orientation.
   void triangulate(const std::vector<Index>& polygon, const Points& points, std::vector<Index>& out) {
     const auto n = static_cast<Index>(polygon.size());
-    if (n == 3 || !project(polygon, points) || is_convex()) {
+    if (n == 3 || !project(polygon, points) || is_strictly_convex()) {
       for (Index i = 1; i + 1 < n; ++i) out.insert(out.end(), {polygon[0], polygon[i], polygon[i + 1]});
       return;
     }
@@ -141,10 +140,11 @@ class PolygonTriangulator {
     return (xy_[b][0] - xy_[a][0]) * (xy_[c][1] - xy_[a][1]) - (xy_[b][1] - xy_[a][1]) * (xy_[c][0] - xy_[a][0]);
   }
 
-  bool is_convex() const {
+  /// Every corner turns left, so a fan has no flipped or flat triangle.
+  bool is_strictly_convex() const {
     const auto n = static_cast<Index>(xy_.size());
     for (Index i = 0; i < n; ++i)
-      if (turn((i + n - 1) % n, i, (i + 1) % n) < 0) return false;
+      if (turn((i + n - 1) % n, i, (i + 1) % n) <= 0) return false;
     return true;
   }
 

@@ -61,8 +61,9 @@ struct CleanedMesh {
 /// - consecutive repeats in a polygon are collapsed; a polygon left with fewer
 ///   than 3 vertices or with a repeated vertex is dropped as degenerate;
 /// - polygons are triangulated by ear clipping in their best-fit plane (a
-///   convex polygon gives a fan), n - 2 triangles for n vertices, keeping
-///   the polygon's orientation;
+///   strictly convex polygon gives a fan), n - 2 triangles for n vertices,
+///   keeping the polygon's orientation and avoiding flat triangles at corners
+///   that lie on a straight edge;
 /// - duplicate triangles (same vertex set) are dropped, the first kept;
 /// - unreferenced vertices are dropped;
 /// - boundaries are kept; non-manifold edges and vertices are kept and warned about.
