@@ -28,4 +28,7 @@ bool parse(const std::vector<std::string>& args, const std::string& usage,
            const po::options_description& options, const po::positional_options_description& positional,
            po::variables_map& vm);
 
+// Subcommand entry points, one source file each (cmd_<name>.cpp).
+int run_features(const std::vector<std::string>& args);
+
 }  // namespace reebkit::cli

@@ -9,7 +9,9 @@
 namespace reebkit::cli {
 
 const std::vector<Command>& commands() {
-  static const std::vector<Command> all = {};
+  static const std::vector<Command> all = {
+      {"features", "feature points and quotient function f_q of a mesh", run_features},
+  };
   return all;
 }
 

@@ -10,6 +10,55 @@
 
 namespace reebkit {
 
+namespace {
+
+constexpr Index kCanonicalSeed = 0;
+
+// A mutually farthest (or best found) pair and the distance fields from it.
+struct DiameterEnds {
+  Index s1 = kInvalidIndex, s2 = kInvalidIndex;
+  std::vector<double> f1, f2;  // distances from s1 and from s2
+  int passes = 0;              // full Dijkstra passes spent
+
+  double length() const { return f1[static_cast<std::size_t>(s2)]; }
+  bool longer_than(const DiameterEnds& o) const {
+    if (length() != o.length()) return length() > o.length();
+    return std::minmax(s1, s2) < std::minmax(o.s1, o.s2);
+  }
+};
+
+// Double sweep from `seed`, repeated (v_s1 <- v_s2, v_s2 <- farthest) until
+// the pair is mutually farthest or `max_extra_sweeps` more passes were spent.
+DiameterEnds find_diameter_ends(DijkstraSolver& solver, Index seed, int max_extra_sweeps) {
+  DiameterEnds e;
+  const DistanceField& field = solver.run({seed});
+  if (field.reached != static_cast<Index>(field.distance.size()))
+    throw InvalidArgument("extract_feature_points: the mesh graph is not connected (" +
+                          std::to_string(field.reached) + " of " + std::to_string(field.distance.size()) +
+                          " vertices reachable); extract each component on its own");
+  e.s1 = field.farthest;
+  solver.run({e.s1});
+  e.s2 = field.farthest;
+  e.f1 = field.distance;
+  solver.run({e.s2});
+  Index back = field.farthest;  // farthest from s2
+  e.f2 = field.distance;
+  e.passes = 3;
+  for (int extra = 0; extra < max_extra_sweeps && back != e.s1; ++extra) {
+    // d(s2, back) > d(s1, s2): the pair moves outward along the diameter.
+    e.s1 = e.s2;
+    e.s2 = back;
+    e.f1.swap(e.f2);
+    solver.run({e.s2});
+    back = field.farthest;
+    e.f2 = field.distance;
+    ++e.passes;
+  }
+  return e;
+}
+
+}  // namespace
+
 FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOptions& options) {
   const Index n = graph.num_vertices();
   if (n == 0) throw InvalidArgument("extract_feature_points: empty mesh");
@@ -23,29 +72,29 @@ FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOption
   DijkstraSolver solver(graph);
 
   // Eqs. (2) and (4): v_s1 farthest from v_r, v_s2 farthest from v_s1, then
-  // further sweeps until v_s1 and v_s2 are mutually farthest.
-  Index s1 = solver.run({options.start_vertex}).farthest;
-  if (solver.settled().size() != static_cast<std::size_t>(n))
-    throw InvalidArgument("extract_feature_points: the mesh graph is not connected (" +
-                          std::to_string(solver.settled().size()) + " of " + std::to_string(n) +
-                          " vertices reachable); extract each component on its own");
-  const DistanceField& field = solver.run({s1});
-  Index s2 = field.farthest;
-  std::vector<double> f1 = field.distance;
-  solver.run({s2});
-  Index back = field.farthest;  // farthest from s2
-  std::vector<double> f2 = field.distance;
-  out.sweeps = 3;
-  for (int extra = 0; extra < options.max_extra_sweeps && back != s1; ++extra) {
-    // d(s2, back) > d(s1, s2): the pair moves outward along the diameter.
-    s1 = s2;
-    s2 = back;
-    f1.swap(f2);
-    solver.run({s2});
-    back = field.farthest;
-    f2 = field.distance;
-    ++out.sweeps;
+  // further sweeps until the two are mutually farthest. The search runs from
+  // v_r and from vertex 0 and keeps the longer pair (ties: smaller ids), so a
+  // start vertex changes the result only where it finds a longer diameter.
+  DiameterEnds ends = find_diameter_ends(solver, kCanonicalSeed, options.max_extra_sweeps);
+  int passes = ends.passes;
+  const auto consider = [&](Index seed) {
+    DiameterEnds other = find_diameter_ends(solver, seed, options.max_extra_sweeps);
+    passes += other.passes;
+    if (other.longer_than(ends)) ends = std::move(other);
+  };
+  // Farthest-point seeds: the vertex farthest from every end found so far.
+  std::vector<Index> found = {ends.s1, ends.s2};
+  for (int k = 0; k < options.extra_seeds; ++k) {
+    const Index seed = solver.run(found).farthest;
+    ++passes;
+    consider(seed);
+    found.push_back(seed);
   }
+  if (options.start_vertex != kCanonicalSeed) consider(options.start_vertex);
+  out.sweeps = passes;
+  const Index s1 = ends.s1, s2 = ends.s2;
+  const std::vector<double>& f1 = ends.f1;
+  const std::vector<double>& f2 = ends.f2;
   out.source1 = s1;
   out.source2 = s2;
   out.diameter = f1[static_cast<std::size_t>(s2)];

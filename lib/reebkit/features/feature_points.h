@@ -13,13 +13,18 @@ struct FeatureOptions {
   /// epsilon of eq. (6): two extrema closer than epsilon (normalized geodesic
   /// distance, i.e. a fraction of `diameter`) are "the same place". Paper: 0.05.
   double epsilon = 0.05;
-  /// v_r of eq. (2), the vertex the search for the diameter ends starts from.
+  /// v_r of eq. (2), where the search for the diameter ends starts. Eqs.
+  /// (2)-(4) take v_s1 farthest from v_r and v_s2 farthest from v_s1; reebkit
+  /// repeats that double sweep until the pair is mutually farthest, and runs
+  /// it from vertex 0 and `extra_seeds` more seeds too, keeping the longest pair (ties: smaller vertex ids).
+  /// So v_r changes the result only where it leads to a longer diameter.
   Index start_vertex = 0;
-  /// Eqs. (2)-(4) take v_s1 farthest from v_r and v_s2 farthest from v_s1.
-  /// reebkit repeats that double sweep (v_s1 <- v_s2, v_s2 <- farthest) until
-  /// the two are mutually farthest, at most this many extra passes, so that
-  /// the result does not depend on v_r. 0 = the paper's single sweep.
+  /// At most this many extra passes per sweep (v_s1 <- v_s2, v_s2 <- the
+  /// vertex farthest from it). 0 = the paper's single double sweep.
   int max_extra_sweeps = 6;
+  /// Further sweeps from farthest-point seeds (the vertex farthest from the
+  /// ends found so far), to find the true diameter more often.
+  int extra_seeds = 2;
 };
 
 struct FeaturePoints {

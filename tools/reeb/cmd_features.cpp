@@ -1,0 +1,153 @@
+// reeb features MESH: feature points and the quotient function f_q of a mesh
+// (Tierny et al. 2006, section 4.1).
+#include "reeb/cli.h"
+#include "reebkit/core/error.h"
+#include "reebkit/core/timer.h"
+#include "reebkit/features/feature_points.h"
+#include "reebkit/features/quotient_function.h"
+#include "reebkit/geodesic/dijkstra.h"
+#include "reebkit/io/ply.h"
+#include "reebkit/mesh/load_mesh.h"
+#include "reebkit/output/colormap.h"
+#include "reebkit/output/json_writer.h"
+
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+
+namespace reebkit::cli {
+
+namespace {
+
+struct ComponentResult {
+  Mesh mesh;
+  FeaturePoints features;
+  QuotientFunction fq;
+  double graph_ms = 0, features_ms = 0, fq_ms = 0;
+};
+
+ComponentResult analyze(Mesh mesh, const FeatureOptions& options) {
+  ComponentResult r;
+  Timer timer;
+  const MeshGraph graph = build_mesh_graph(mesh);
+  r.graph_ms = timer.lap();
+  r.features = extract_feature_points(graph, options);
+  r.features_ms = timer.lap();
+  r.fq = quotient_function(graph, r.features.vertices);
+  r.fq_ms = timer.lap();
+  r.mesh = std::move(mesh);
+  return r;
+}
+
+void print(const ComponentResult& r, std::size_t index, std::size_t count) {
+  std::cout << (count > 1 ? "component " + std::to_string(index) + ": " : std::string()) << r.mesh.num_vertices()
+            << " vertices, " << r.mesh.num_triangles() << " triangles, geodesic diameter " << r.features.diameter
+            << "\n"
+            << r.features.vertices.size() << " feature points (vertex ids as in the file):\n";
+  for (const Index v : r.features.vertices)
+    std::cout << "  " << std::setw(8) << r.mesh.source_index(v) << "  (" << r.mesh.vertices(v, 0) << ", "
+              << r.mesh.vertices(v, 1) << ", " << r.mesh.vertices(v, 2) << ")\n";
+  std::cout << std::fixed << std::setprecision(2) << "time: graph " << r.graph_ms << " ms, features "
+            << r.features_ms << " ms, f_q " << r.fq_ms << " ms\n"
+            << std::defaultfloat << std::setprecision(6);
+}
+
+void write_json(const std::string& path, const std::string& mesh_path, const FeatureOptions& options,
+                const std::vector<ComponentResult>& results, double load_ms) {
+  std::ofstream out(path);
+  if (!out) throw Error(path + ": cannot open for writing");
+  JsonWriter json(out);
+  json.begin_object().field("mesh", mesh_path).field("epsilon", options.epsilon).field("load_ms", load_ms);
+  json.key("components").begin_array();
+  for (const ComponentResult& r : results) {
+    json.begin_object()
+        .field("vertices", static_cast<long long>(r.mesh.num_vertices()))
+        .field("triangles", static_cast<long long>(r.mesh.num_triangles()))
+        .field("diameter", r.features.diameter);
+    json.key("diameter_ends").numbers(std::vector<long long>{r.mesh.source_index(r.features.source1),
+                                                             r.mesh.source_index(r.features.source2)});
+    json.key("feature_points").begin_array();
+    for (const Index v : r.features.vertices) {
+      json.begin_object().field("vertex", static_cast<long long>(r.mesh.source_index(v)));
+      json.key("position").numbers(std::vector<double>{r.mesh.vertices(v, 0), r.mesh.vertices(v, 1), r.mesh.vertices(v, 2)});
+      json.end_object();
+    }
+    json.end_array();
+    json.key("timings_ms")
+        .begin_object()
+        .field("graph", r.graph_ms)
+        .field("features", r.features_ms)
+        .field("quotient", r.fq_ms)
+        .end_object();
+    json.end_object();
+  }
+  json.end_array().end_object();
+  if (!out) throw Error(path + ": write failed");
+}
+
+// f_q as viridis colors; the geodesic disc of radius 1.5% of the diameter
+// around each feature point painted red so that the points are visible.
+void write_fq_ply(const std::string& path, const ComponentResult& r) {
+  PlyVertexData data;
+  data.colors = colorize(r.fq.value, 0.0, 1.0);
+  std::vector<double> marker(r.fq.value.size(), 0.0);
+  const MeshGraph graph = build_mesh_graph(r.mesh);
+  const DistanceField near = dijkstra(graph, r.features.vertices, DijkstraOptions{0.015 * r.features.diameter});
+  for (Index v = 0; v < r.mesh.num_vertices(); ++v) {
+    if (near.nearest_source[v] == kInvalidIndex) continue;
+    data.colors.row(v) << 0.85, 0.1, 0.1;
+    marker[static_cast<std::size_t>(v)] = near.nearest_source[v] + 1;
+  }
+  data.scalars.emplace_back("fq", r.fq.value);
+  data.scalars.emplace_back("feature", marker);
+  write_ply(path, r.mesh, data);
+}
+
+}  // namespace
+
+int run_features(const std::vector<std::string>& args) {
+  po::options_description options("options");
+  std::string mesh_path, json_path, ply_path;
+  FeatureOptions feature_options;
+  bool all_components = false;
+  options.add_options()
+      ("mesh", po::value(&mesh_path)->required(), "mesh file (.off .obj .ply .stl)")
+      ("output,o", po::value(&json_path), "write the feature points as JSON")
+      ("ply", po::value(&ply_path), "write the mesh with f_q as colors and the feature points marked in red")
+      ("epsilon", po::value(&feature_options.epsilon)->default_value(feature_options.epsilon),
+       "relaxation radius of the extrema intersection (fraction of the geodesic diameter)")
+      ("start", po::value(&feature_options.start_vertex)->default_value(feature_options.start_vertex),
+       "start vertex v_r of the diameter search (index in the cleaned mesh)")
+      ("all-components", po::bool_switch(&all_components),
+       "process every connected component (default: the largest only)");
+  po::positional_options_description positional;
+  positional.add("mesh", 1);
+  po::variables_map vm;
+  if (!parse(args, "reeb features MESH [-o features.json] [--ply fq.ply]", options, positional, vm)) return 0;
+
+  Timer timer;
+  CleanupOptions cleanup;
+  cleanup.keep_all_components = all_components;
+  CleanedMesh cleaned = load_mesh(mesh_path, cleanup);
+  const double load_ms = timer.lap();
+  for (const std::string& w : cleaned.report.warnings) std::cerr << "warning: " << w << "\n";
+  std::cout << mesh_path << ": read and cleaned in " << std::fixed << std::setprecision(2) << load_ms << " ms\n"
+            << std::defaultfloat;
+
+  std::vector<ComponentResult> results;
+  for (std::size_t c = 0; c < cleaned.components.size(); ++c) {
+    results.push_back(analyze(std::move(cleaned.components[c]), feature_options));
+    print(results.back(), c, cleaned.components.size());
+  }
+  if (!json_path.empty()) {
+    write_json(json_path, mesh_path, feature_options, results, load_ms);
+    std::cout << "wrote " << json_path << "\n";
+  }
+  if (!ply_path.empty()) {
+    write_fq_ply(ply_path, results.front());
+    std::cout << "wrote " << ply_path << (results.size() > 1 ? " (largest component)" : "") << "\n";
+  }
+  return 0;
+}
+
+}  // namespace reebkit::cli
