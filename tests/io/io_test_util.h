@@ -46,6 +46,8 @@ inline void write_bytes(const std::filesystem::path& path, std::string_view byte
   std::ofstream(path, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
 }
 
+using Polygons = std::vector<std::vector<Index>>;
+
 /// The MeshFileError `action` throws; fails the test when it throws none.
 template <typename Action>
 MeshFileError error_of(Action&& action) {
@@ -56,6 +58,12 @@ MeshFileError error_of(Action&& action) {
   }
   ADD_FAILURE() << "expected a MeshFileError";
   return MeshFileError("", "no error");
+}
+
+/// what() of the MeshFileError that `parse` (parse_off, parse_ply, ...) throws on `text`.
+inline std::string parse_error(PolygonSoup (*parse)(std::string_view, std::string), std::string_view text,
+                               const std::string& source) {
+  return error_of([&] { parse(text, source); }).what();
 }
 
 /// Passes when `text` contains every one of `parts`.
@@ -69,8 +77,8 @@ inline ::testing::AssertionResult contains(std::string_view text, std::initializ
 }
 
 /// The polygons of a soup as lists of vertex indices.
-inline std::vector<std::vector<Index>> polygons(const PolygonSoup& soup) {
-  std::vector<std::vector<Index>> out;
+inline Polygons polygons(const PolygonSoup& soup) {
+  Polygons out;
   for (Index p = 0; p < soup.num_polygons(); ++p) {
     out.emplace_back(soup.face_vertex.begin() + soup.face_offset[static_cast<std::size_t>(p)],
                      soup.face_vertex.begin() + soup.face_offset[static_cast<std::size_t>(p) + 1]);
@@ -79,8 +87,8 @@ inline std::vector<std::vector<Index>> polygons(const PolygonSoup& soup) {
 }
 
 /// The triangles of a mesh as lists of vertex indices, to compare with polygons().
-inline std::vector<std::vector<Index>> polygons(const Mesh& mesh) {
-  std::vector<std::vector<Index>> out;
+inline Polygons polygons(const Mesh& mesh) {
+  Polygons out;
   for (Index f = 0; f < mesh.num_triangles(); ++f) {
     out.push_back({mesh.triangles(f, 0), mesh.triangles(f, 1), mesh.triangles(f, 2)});
   }
@@ -112,6 +120,12 @@ inline ::testing::AssertionResult same_bits(const Points& a, const Points& b) {
     }
   }
   return ::testing::AssertionSuccess();
+}
+
+/// Passes when `soup` holds the vertices of `mesh` bit for bit and its triangles in order.
+inline ::testing::AssertionResult same_mesh(const PolygonSoup& soup, const Mesh& mesh) {
+  if (polygons(soup) != polygons(mesh)) return ::testing::AssertionFailure() << "the polygons differ";
+  return same_bits(soup.vertices, mesh.vertices);
 }
 
 }  // namespace reebkit::test

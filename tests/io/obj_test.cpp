@@ -4,13 +4,8 @@
 
 #include <gtest/gtest.h>
 
-namespace reebkit {
+namespace reebkit::test {
 namespace {
-
-using test::contains;
-using test::error_of;
-using test::polygons;
-using Polygons = std::vector<std::vector<Index>>;
 
 TEST(Obj, ReadsVerticesAndFaces) {
   const PolygonSoup soup = parse_obj("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n", "sq.obj");
@@ -117,7 +112,7 @@ TEST(Obj, PointsOnly) {
 
 TEST(ObjError, EmptyFile) {
   for (const char* text : {"", "\n \n", "# nothing\n"}) {
-    EXPECT_TRUE(contains(error_of([&] { parse_obj(text, "e.obj"); }).what(), {"e.obj", "empty file"}));
+    EXPECT_TRUE(contains(parse_error(parse_obj, text, "e.obj"), {"e.obj", "empty file"}));
   }
 }
 
@@ -125,24 +120,24 @@ TEST(ObjError, NonNumericTokenIsQuoted) {
   const MeshFileError e = error_of([] { parse_obj("v 0 0 0\nv 1 O 0\n", "n.obj"); });
   EXPECT_EQ(e.line(), 2u);
   EXPECT_TRUE(contains(e.what(), {"n.obj:2:", "expected a vertex coordinate, found 'O'"}));
-  EXPECT_TRUE(contains(error_of([] { parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 two 3\n", "n.obj"); }).what(),
+  EXPECT_TRUE(contains(parse_error(parse_obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 two 3\n", "n.obj"),
                        {"n.obj:4:", "expected a vertex index, found 'two'"}));
-  EXPECT_TRUE(contains(error_of([] { parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 //2 3\n", "n.obj"); }).what(),
+  EXPECT_TRUE(contains(parse_error(parse_obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 //2 3\n", "n.obj"),
                        {"n.obj:4:", "expected a vertex index, found '//2'"}));
 }
 
 TEST(ObjError, ShortVertexLine) {
-  EXPECT_TRUE(contains(error_of([] { parse_obj("v 0 0\n", "s.obj"); }).what(),
+  EXPECT_TRUE(contains(parse_error(parse_obj, "v 0 0\n", "s.obj"),
                        {"s.obj:1:", "expected a vertex coordinate, found end of"}));
 }
 
 TEST(ObjError, IndexOutOfRangeNamesFaceAndIndex) {
   const char* const vertices = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
-  EXPECT_TRUE(contains(error_of([&] { parse_obj(std::string(vertices) + "f 1 2 3\nf 1 2 9\n", "r.obj"); }).what(),
+  EXPECT_TRUE(contains(parse_error(parse_obj, std::string(vertices) + "f 1 2 3\nf 1 2 9\n", "r.obj"),
                        {"r.obj:5:", "face 1 refers to vertex 9, but there are 3 vertices"}));
-  EXPECT_TRUE(contains(error_of([&] { parse_obj(std::string(vertices) + "f -1 -2 -4\n", "r.obj"); }).what(),
+  EXPECT_TRUE(contains(parse_error(parse_obj, std::string(vertices) + "f -1 -2 -4\n", "r.obj"),
                        {"r.obj:4:", "face 0 refers to vertex -4, but there are 3 vertices"}));
-  EXPECT_TRUE(contains(error_of([&] { parse_obj(std::string(vertices) + "f 1 0 2\n", "r.obj"); }).what(),
+  EXPECT_TRUE(contains(parse_error(parse_obj, std::string(vertices) + "f 1 0 2\n", "r.obj"),
                        {"r.obj:4:", "face 0 refers to vertex 0, but OBJ indices start at 1"}));
 }
 
@@ -152,34 +147,34 @@ TEST(ObjError, ForwardReferenceNeverDefined) {
 }
 
 TEST(ObjError, PolygonWithFewerThanThreeVertices) {
-  EXPECT_TRUE(contains(error_of([] { parse_obj("v 0 0 0\nv 1 0 0\nf 1 2\n", "p.obj"); }).what(),
+  EXPECT_TRUE(contains(parse_error(parse_obj, "v 0 0 0\nv 1 0 0\nf 1 2\n", "p.obj"),
                        {"p.obj:3:", "face 0 has 2 vertices; a polygon needs at least 3"}));
 }
 
 TEST(ObjError, NonFiniteCoordinateNamesTheVertex) {
-  EXPECT_TRUE(contains(error_of([] { parse_obj("v 0 0 0\nv 0 nan 0\n", "f.obj"); }).what(),
+  EXPECT_TRUE(contains(parse_error(parse_obj, "v 0 0 0\nv 0 nan 0\n", "f.obj"),
                        {"f.obj:2:", "vertex 1 has a non-finite coordinate"}));
 }
 
 TEST(ObjError, NotAStatement) {
-  EXPECT_TRUE(contains(error_of([] { parse_obj("v 0 0 0\n1.5 2 3\n", "g.obj"); }).what(),
+  EXPECT_TRUE(contains(parse_error(parse_obj, "v 0 0 0\n1.5 2 3\n", "g.obj"),
                        {"g.obj:2:", "expected an OBJ statement, found '1.5'"}));
-  EXPECT_TRUE(contains(error_of([] { parse_obj(std::string("\x01\x02\xff", 3), "g.obj"); }).what(),
+  EXPECT_TRUE(contains(parse_error(parse_obj, std::string("\x01\x02\xff", 3), "g.obj"),
                        {"g.obj:1:", "'\\x01\\x02\\xff'"}));
 }
 
 TEST(ObjError, MissingFile) {
-  const test::TempDir dir;
+  const TempDir dir;
   EXPECT_TRUE(contains(error_of([&] { read_obj(dir / "absent.obj"); }).what(), {"absent.obj", "file not found"}));
 }
 
 TEST(Obj, ReadsFromFile) {
-  const test::TempDir dir;
-  test::write_bytes(dir / "tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  const TempDir dir;
+  write_bytes(dir / "tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
   const PolygonSoup soup = read_obj(dir / "tri.obj");
   EXPECT_EQ(soup.source, (dir / "tri.obj").string());
   EXPECT_EQ(polygons(soup), (Polygons{{0, 1, 2}}));
 }
 
 }  // namespace
-}  // namespace reebkit
+}  // namespace reebkit::test

@@ -7,13 +7,8 @@
 
 #include <cmath>
 
-namespace reebkit {
+namespace reebkit::test {
 namespace {
-
-using test::contains;
-using test::error_of;
-using test::polygons;
-using Polygons = std::vector<std::vector<Index>>;
 
 constexpr const char* kSquare =
     "OFF\n"
@@ -133,12 +128,11 @@ TEST(Off, PointCloudHasNoPolygons) {
 }
 
 TEST(Off, RoundTripKeepsEveryBit) {
-  const test::TempDir dir;
-  const Mesh mesh = test::awkward_tetrahedron();
+  const TempDir dir;
+  const Mesh mesh = awkward_tetrahedron();
   write_off(dir / "t.off", mesh);
   const PolygonSoup soup = read_off(dir / "t.off");
-  EXPECT_TRUE(test::same_bits(soup.vertices, mesh.vertices));
-  EXPECT_EQ(polygons(soup), polygons(mesh));
+  EXPECT_TRUE(same_mesh(soup, mesh));
   EXPECT_EQ(soup.source, (dir / "t.off").string());
 }
 
@@ -152,25 +146,25 @@ TEST(OffError, EmptyFile) {
 }
 
 TEST(OffError, BadHeader) {
-  EXPECT_TRUE(contains(error_of([] { parse_off("PLY\n3 1 0\n", "h.off"); }).what(),
+  EXPECT_TRUE(contains(parse_error(parse_off, "PLY\n3 1 0\n", "h.off"),
                        {"h.off:1:", "expected an OFF header, found 'PLY'"}));
-  EXPECT_TRUE(contains(error_of([] { parse_off("4OFF\n3 1 0\n", "h.off"); }).what(),
+  EXPECT_TRUE(contains(parse_error(parse_off, "4OFF\n3 1 0\n", "h.off"),
                        {"h.off:1:", "unsupported OFF variant '4OFF'"}));
-  EXPECT_TRUE(contains(error_of([] { parse_off("OFF BINARY\n", "h.off"); }).what(),
+  EXPECT_TRUE(contains(parse_error(parse_off, "OFF BINARY\n", "h.off"),
                        {"h.off:1:", "binary OFF is not supported"}));
 }
 
 TEST(OffError, BadCounts) {
-  EXPECT_TRUE(contains(error_of([] { parse_off("OFF\n-3 1 0\n", "c.off"); }).what(),
+  EXPECT_TRUE(contains(parse_error(parse_off, "OFF\n-3 1 0\n", "c.off"),
                        {"c.off:2:", "bad vertex count -3"}));
-  EXPECT_TRUE(contains(error_of([] { parse_off("OFF\n3 x 0\n", "c.off"); }).what(),
+  EXPECT_TRUE(contains(parse_error(parse_off, "OFF\n3 x 0\n", "c.off"),
                        {"c.off:2:", "expected the face count, found 'x'"}));
-  EXPECT_TRUE(contains(error_of([] { parse_off("OFF\n3 1 0\n", "c.off"); }).what(),
+  EXPECT_TRUE(contains(parse_error(parse_off, "OFF\n3 1 0\n", "c.off"),
                        {"c.off", "truncated"}));
   // A huge count is rejected before any memory is reserved for it.
-  EXPECT_TRUE(contains(error_of([] { parse_off("OFF\n2000000000 2000000000 0\n0 0 0\n", "c.off"); }).what(),
+  EXPECT_TRUE(contains(parse_error(parse_off, "OFF\n2000000000 2000000000 0\n0 0 0\n", "c.off"),
                        {"c.off", "truncated: file ends after 1 of 2000000000 vertices"}));
-  EXPECT_TRUE(contains(error_of([] { parse_off("OFF\n9999999999 1 0\n", "c.off"); }).what(),
+  EXPECT_TRUE(contains(parse_error(parse_off, "OFF\n9999999999 1 0\n", "c.off"),
                        {"c.off:2:", "bad vertex count 9999999999"}));
 }
 
@@ -206,7 +200,7 @@ TEST(OffError, IndexOutOfRangeNamesFaceAndIndex) {
   const MeshFileError e =
       error_of([] { parse_off("OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 1 7\n", "r.off"); });
   EXPECT_TRUE(contains(e.what(), {"r.off:7:", "face 1 refers to vertex 7, but there are 3 vertices"}));
-  EXPECT_TRUE(contains(error_of([] { parse_off("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n", "r.off"); }).what(),
+  EXPECT_TRUE(contains(parse_error(parse_off, "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n", "r.off"),
                        {"r.off:6:", "face 0 refers to vertex -1"}));
 }
 
@@ -229,7 +223,7 @@ TEST(Off, NumbersBeyondDoubleRangeRound) {
 }
 
 TEST(OffError, MissingFile) {
-  const test::TempDir dir;
+  const TempDir dir;
   const MeshFileError e = error_of([&] { read_off(dir / "absent.off"); });
   EXPECT_TRUE(contains(e.what(), {"absent.off", "file not found"}));
 }
@@ -264,4 +258,4 @@ TEST(OffDataset, Quads) {
 }
 
 }  // namespace
-}  // namespace reebkit
+}  // namespace reebkit::test

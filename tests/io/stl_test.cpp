@@ -10,13 +10,9 @@
 #include <cstdint>
 #include <cstring>
 
-namespace reebkit {
+namespace reebkit::test {
 namespace {
 
-using test::contains;
-using test::error_of;
-using test::polygons;
-using Polygons = std::vector<std::vector<Index>>;
 using Triangle = std::array<float, 9>;  // three corners
 
 /// A binary STL (little-endian, as the format says; the tests run on little-endian machines).
@@ -116,54 +112,42 @@ TEST(Stl, EmptySolid) {
 // --- errors ------------------------------------------------------------------
 
 TEST(StlError, EmptyFile) {
-  EXPECT_TRUE(contains(error_of([] { parse_stl("", "e.stl"); }).what(), {"e.stl", "empty file"}));
+  EXPECT_TRUE(contains(parse_error(parse_stl, "", "e.stl"), {"e.stl", "empty file"}));
 }
 
 TEST(StlError, BinaryTruncated) {
   const std::string whole = binary_stl(kTwoTriangles);
-  EXPECT_TRUE(contains(error_of([&] { parse_stl(whole.substr(0, whole.size() - 1), "t.stl"); }).what(),
+  EXPECT_TRUE(contains(parse_error(parse_stl, whole.substr(0, whole.size() - 1), "t.stl"),
                        {"t.stl: truncated: the binary header declares 2 triangles, which take 184 bytes, the file has "
                         "183"}));
-  EXPECT_TRUE(contains(error_of([&] { parse_stl(whole.substr(0, 50), "t.stl"); }).what(),
+  EXPECT_TRUE(contains(parse_error(parse_stl, whole.substr(0, 50), "t.stl"),
                        {"t.stl: truncated", "84 header bytes, the file has 50"}));
   std::string huge = whole;
   huge[83] = '\x7f';  // about two billion triangles
-  EXPECT_TRUE(contains(error_of([&] { parse_stl(huge, "t.stl"); }).what(), {"t.stl: truncated", "declares 2130706434"}));
+  EXPECT_TRUE(contains(parse_error(parse_stl, huge, "t.stl"), {"t.stl: truncated", "declares 2130706434"}));
 }
 
 TEST(StlError, BinaryNonFiniteCoordinate) {
-  const float nan = std::nanf("");
-  const MeshFileError e =
-      error_of([&] { parse_stl(binary_stl({kTwoTriangles[0], Triangle{0, 0, 0, 1, nan, 0, 0, 1, 0}}), "f.stl"); });
-  EXPECT_TRUE(contains(e.what(), {"f.stl: facet 1, corner 1 has a non-finite coordinate"}));
+  const std::string bytes = binary_stl({kTwoTriangles[0], Triangle{0, 0, 0, 1, std::nanf(""), 0, 0, 1, 0}});
+  EXPECT_TRUE(contains(parse_error(parse_stl, bytes, "f.stl"), {"f.stl: facet 1, corner 1 has a non-finite coordinate"}));
 }
 
 TEST(StlError, AsciiProblemsNameTheLine) {
-  EXPECT_TRUE(contains(error_of([] { parse_stl("solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 "
-                                               "x\n",
-                                               "a.stl"); })
-                           .what(),
-                       {"a.stl:5:", "expected a vertex coordinate, found 'x'"}));
-  EXPECT_TRUE(contains(error_of([] { parse_stl("solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 "
-                                               "0\nendloop\nendfacet\n",
-                                               "a.stl"); })
-                           .what(),
+  const std::string two_corners = "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n";
+  EXPECT_TRUE(contains(parse_error(parse_stl, two_corners + "vertex 0 1 x\n", "a.stl"),
+                       {"a.stl:6:", "expected a vertex coordinate, found 'x'"}));
+  EXPECT_TRUE(contains(parse_error(parse_stl, two_corners + "endloop\nendfacet\n", "a.stl"),
                        {"a.stl:6:", "face 0 has 2 vertices; a polygon needs at least 3"}));
-  EXPECT_TRUE(contains(error_of([] { parse_stl("solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 "
-                                               "0\nvertex 0 inf 0\nendloop\nendfacet\nendsolid\n",
-                                               "a.stl"); })
-                           .what(),
+  EXPECT_TRUE(contains(parse_error(parse_stl, two_corners + "vertex 0 inf 0\nendloop\n", "a.stl"),
                        {"a.stl:6:", "facet 0, corner 2 has a non-finite coordinate"}));
-  EXPECT_TRUE(contains(error_of([] { parse_stl("solid s\nfacet normal 0 0 1\nouter lop\n", "a.stl"); }).what(),
-                       {"a.stl:3:", "expected 'loop', found 'lop'"}));
-  EXPECT_TRUE(contains(error_of([] { parse_stl("solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n", "a.stl"); })
-                           .what(),
+  EXPECT_TRUE(contains(parse_error(parse_stl, two_corners, "a.stl"),
                        {"a.stl", "expected 'vertex' or 'endloop', found the end of the file"}));
-  EXPECT_TRUE(contains(error_of([] { parse_stl(kAsciiSquare + std::string("solid\nfacet normal 0 0 1\n"), "a.stl"); })
-                           .what(),
+  EXPECT_TRUE(contains(parse_error(parse_stl, "solid s\nfacet normal 0 0 1\nouter lop\n", "a.stl"),
+                       {"a.stl:3:", "expected 'loop', found 'lop'"}));
+  EXPECT_TRUE(contains(parse_error(parse_stl, kAsciiSquare + std::string("solid\nfacet normal 0 0 1\n"), "a.stl"),
                        {"a.stl", "truncated: expected 'outer', found the end of the file"}));
   const std::string one_facet = std::string(kAsciiSquare).substr(0, std::string(kAsciiSquare).find("endfacet") + 9);
-  EXPECT_TRUE(contains(error_of([&] { parse_stl(one_facet, "a.stl"); }).what(),
+  EXPECT_TRUE(contains(parse_error(parse_stl, one_facet, "a.stl"),
                        {"a.stl", "truncated: expected 'facet' or 'endsolid', found the end of the file"}));
 }
 
@@ -184,4 +168,4 @@ TEST(StlDataset, BinarySphereWeldsToTheOffVertexCount) {
 }
 
 }  // namespace
-}  // namespace reebkit
+}  // namespace reebkit::test
