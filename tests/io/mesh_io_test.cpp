@@ -1,11 +1,18 @@
 #include "reebkit/io/mesh_io.h"
 
+#include "reebkit/io/obj.h"
+#include "reebkit/io/off.h"
+#include "reebkit/io/ply.h"
+#include "reebkit/io/stl.h"
+
 #include "io/io_test_util.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <iterator>
+#include <random>
 #include <regex>
 
 namespace reebkit::test {
@@ -90,6 +97,48 @@ TEST(MeshIo, WriteMeshRejectsOtherFormats) {
   const MeshFileError e = error_of([&] { write_mesh(dir / "t.stl", awkward_tetrahedron()); });
   EXPECT_TRUE(contains(e.what(), {"t.stl", "cannot write format '.stl'", "supported: .off, .ply"}));
   EXPECT_FALSE(std::filesystem::exists(dir / "t.stl"));
+}
+
+/// Every prefix of a valid file, and the file with bytes overwritten at
+/// random, either parses or throws MeshFileError: no crash, no other error.
+TEST(MeshIo, DamagedFilesThrowOnlyMeshFileError) {
+  const TempDir dir;
+  write_ply(dir / "le.ply", awkward_tetrahedron(), {}, PlyEncoding::BinaryLittleEndian);
+  write_ply(dir / "be.ply", awkward_tetrahedron(), {}, PlyEncoding::BinaryBigEndian);
+  std::ifstream le(dir / "le.ply", std::ios::binary);
+  std::ifstream be(dir / "be.ply", std::ios::binary);
+  const std::string stl = "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+                          "endloop\nendfacet\nendsolid\n";
+  std::string binary_stl(80, ' ');
+  binary_stl += std::string("\x01\0\0\0", 4) + std::string(48, '\0') + "\0\0";
+  const std::vector<std::pair<PolygonSoup (*)(std::string_view, std::string), std::string>> files = {
+      {parse_off, one_triangle_in_every_format()[0].bytes},
+      {parse_obj, one_triangle_in_every_format()[1].bytes},
+      {parse_ply, one_triangle_in_every_format()[2].bytes},
+      {parse_ply, std::string(std::istreambuf_iterator<char>(le), {})},
+      {parse_ply, std::string(std::istreambuf_iterator<char>(be), {})},
+      {parse_stl, stl},
+      {parse_stl, binary_stl},
+  };
+  std::mt19937 random(7);
+  for (const auto& [parse, bytes] : files) {
+    std::vector<std::string> damaged;
+    for (std::size_t size = 0; size < bytes.size(); ++size) damaged.push_back(bytes.substr(0, size));
+    for (int trial = 0; trial < 300; ++trial) {
+      std::string copy = bytes;
+      for (int k = 0; k < 3; ++k) copy[random() % copy.size()] = static_cast<char>(random() % 256);
+      damaged.push_back(copy);
+    }
+    for (const std::string& text : damaged) {
+      try {
+        parse(text, "damaged");
+      } catch (const MeshFileError& e) {
+        EXPECT_TRUE(contains(e.what(), {"damaged"}));
+      } catch (const std::exception& e) {
+        ADD_FAILURE() << "unexpected " << e.what();
+      }
+    }
+  }
 }
 
 /// Every OFF file of the CGAL set reads with the vertex and face counts the

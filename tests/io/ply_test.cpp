@@ -348,6 +348,14 @@ TEST(PlyError, HeaderProblems) {
                            .what(),
                        {"the face element has no 'vertex_indices' list"}));
   EXPECT_TRUE(contains(ply_error("ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\n"
+                                 "property list uchar float z\nend_header\n")
+                           .what(),
+                       {"the vertex property 'z' is a list"}));
+  EXPECT_TRUE(contains(ply_error("ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\n"
+                                 "property float z\nelement vertex 0\nend_header\n")
+                           .what(),
+                       {"a second 'vertex' element"}));
+  EXPECT_TRUE(contains(ply_error("ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\n"
                                  "property float z\nelement face 0\nproperty list uchar float vertex_indices\n"
                                  "end_header\n")
                            .what(),

@@ -165,22 +165,20 @@ void assign_face_roles(const TextScanner& in, Element& face) {
 
 /// Gives every property its role, once the whole header is known.
 void assign_roles(const TextScanner& in, Header& header) {
-  bool has_vertices = false;
-  bool has_faces = false;
+  bool seen[2] = {false, false};  // a vertex element, a face element
   for (Element& element : header.elements) {
-    bool& seen = element.name == "vertex" ? has_vertices : has_faces;
-    if (element.name != "vertex" && element.name != "face") continue;
-    if (seen) in.fail("a second '" + element.name + "' element");
-    seen = true;
-    if (element.name == "vertex") {
-      element.kind = Kind::Vertex;
+    element.kind = element.name == "vertex" ? Kind::Vertex : element.name == "face" ? Kind::Face : Kind::Other;
+    if (element.kind == Kind::Other) continue;
+    bool& seen_kind = seen[static_cast<std::size_t>(element.kind)];
+    if (seen_kind) in.fail("a second '" + element.name + "' element");
+    seen_kind = true;
+    if (element.kind == Kind::Vertex) {
       assign_vertex_roles(in, element, header);
     } else {
-      element.kind = Kind::Face;
       assign_face_roles(in, element);
     }
   }
-  if (!has_vertices) in.fail("the header declares no vertex element");
+  if (!seen[static_cast<std::size_t>(Kind::Vertex)]) in.fail("the header declares no vertex element");
 }
 
 /// Reads the header and leaves `in` at the first byte of the body.

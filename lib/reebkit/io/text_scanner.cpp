@@ -116,16 +116,6 @@ void TextScanner::next_line() {
   }
 }
 
-std::string_view TextScanner::rest_of_line() {
-  skip_blanks();
-  const void* newline = std::memchr(pos_, '\n', static_cast<std::size_t>(end_ - pos_));
-  const char* stop = newline ? static_cast<const char*>(newline) : end_;
-  const char* start = pos_;
-  pos_ = stop;
-  while (stop > start && classes_[static_cast<unsigned char>(stop[-1])] == kBlank) --stop;
-  return {start, static_cast<std::size_t>(stop - start)};
-}
-
 double TextScanner::number_on_line(const char* what) { return to_number(token_on_line(), what); }
 
 std::int64_t TextScanner::integer_on_line(const char* what) { return to_integer(token_on_line(), what); }

@@ -23,7 +23,6 @@ class TextScanner {
   /// `text` must outlive the scanner; `source` names it in error messages.
   TextScanner(std::string_view text, std::string source, Options options);
 
-  const std::string& source() const { return source_; }
   /// 1-based line of the scan position.
   std::uint64_t line() const { return line_; }
   /// Bytes from the scan position to the end of the text.
@@ -38,8 +37,6 @@ class TextScanner {
   std::string_view token();
   /// Discards the rest of the current line and its line break.
   void next_line();
-  /// The rest of the current line without surrounding blanks; the line break stays.
-  std::string_view rest_of_line();
 
   /// The next token of the current line as a number / an integer. `what`
   /// names the expected value in the error ("expected <what>, found ...").
