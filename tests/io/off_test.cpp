@@ -230,9 +230,8 @@ TEST(OffError, MissingFile) {
 
 // --- real files ------------------------------------------------------------
 
-TEST(OffDataset, ColoredMeshWithComments) {
-  REEBKIT_REQUIRE_DATASET(dir, "cgal_meshes");
-  const PolygonSoup soup = read_off(dir / "mesh_with_colors.off");
+TEST(OffFixture, ColoredMeshWithComments) {
+  const PolygonSoup soup = read_off(fixture("io/mesh_with_colors.off"));  // from CGAL, CC0
   EXPECT_EQ(soup.num_vertices(), 8);
   EXPECT_EQ(polygons(soup), (Polygons{{0, 1, 7}, {1, 2, 3}, {5, 6, 7}, {1, 3, 4, 5, 7}}));
   ASSERT_EQ(soup.vertex_colors.rows(), 8);

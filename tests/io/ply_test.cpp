@@ -436,9 +436,8 @@ TEST(PlyDataset, PointCloudWithoutFaces) {
   EXPECT_EQ(soup.vertices.row(0), Vec3(45.375, 52.1094, -10.6268).transpose());
 }
 
-TEST(PlyDataset, ColoredTetrahedronWithFaceAndEdgeProperties) {
-  REEBKIT_REQUIRE_DATASET(dir, "cgal_meshes");
-  const PolygonSoup soup = read_ply(dir / "colored_tetra.ply");
+TEST(PlyFixture, ColoredTetrahedronWithFaceAndEdgeProperties) {
+  const PolygonSoup soup = read_ply(fixture("io/colored_tetra.ply"));  // from CGAL, CC0
   ASSERT_EQ(soup.num_vertices(), 4);
   EXPECT_EQ(polygons(soup), (Polygons{{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {0, 2, 3}}));
   EXPECT_EQ(soup.vertices.row(3), Vec3(1, 0, 0).transpose());

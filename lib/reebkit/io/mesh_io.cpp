@@ -21,6 +21,11 @@ std::string lower_extension(const std::filesystem::path& path) {
   return extension;
 }
 
+/// "<problem> '<extension>' (supported: <list>)", or "no file extension (supported: <list>)".
+std::string unsupported(const std::string& extension, const std::string& problem, const std::string& supported) {
+  return (extension.empty() ? "no file extension" : problem + " '" + extension + "'") + " (supported: " + supported + ")";
+}
+
 }  // namespace
 
 PolygonSoup read_polygon_soup(const std::filesystem::path& path) {
@@ -29,14 +34,14 @@ PolygonSoup read_polygon_soup(const std::filesystem::path& path) {
   if (extension == ".obj") return read_obj(path);
   if (extension == ".ply") return read_ply(path);
   if (extension == ".stl") return read_stl(path);
-  throw MeshFileError(path.string(), "unknown mesh format '" + extension + "' (supported: .off, .obj, .ply, .stl)");
+  throw MeshFileError(path.string(), unsupported(extension, "unknown mesh format", ".off, .obj, .ply, .stl"));
 }
 
 void write_mesh(const std::filesystem::path& path, const Mesh& mesh) {
   const std::string extension = lower_extension(path);
   if (extension == ".off") return write_off(path, mesh);
   if (extension == ".ply") return write_ply(path, mesh);
-  throw MeshFileError(path.string(), "cannot write format '" + extension + "' (supported: .off, .ply)");
+  throw MeshFileError(path.string(), unsupported(extension, "cannot write format", ".off, .ply"));
 }
 
 }  // namespace reebkit

@@ -1,6 +1,7 @@
 // Stanford PLY reader and writer.
 //
-// Reads the ascii, binary_little_endian and binary_big_endian encodings.
+// Reads the ascii (one element item per line), binary_little_endian and
+// binary_big_endian encodings.
 // Vertex positions x y z may have any scalar type (char uchar short ushort int
 // uint float double, or the int8 ... float64 aliases); faces come from the list
 // property "vertex_indices" (or "vertex_index") of any integer count and item
