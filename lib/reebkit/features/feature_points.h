@@ -21,10 +21,10 @@ struct FeatureOptions {
   Index start_vertex = 0;
   /// At most this many extra passes per sweep (v_s1 <- v_s2, v_s2 <- the
   /// vertex farthest from it). 0 = the paper's single double sweep.
-  int max_extra_sweeps = 6;
+  int max_extra_sweeps = 1;
   /// Further sweeps from farthest-point seeds (the vertex farthest from the
   /// ends found so far), to find the true diameter more often.
-  int extra_seeds = 2;
+  int extra_seeds = 1;
 };
 
 struct FeaturePoints {

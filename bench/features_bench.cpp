@@ -1,0 +1,144 @@
+// Geodesics and feature points: the speed figures of the README.
+//
+//   build/bench/features_bench [--benchmark_filter=...]
+//
+// Dijkstra: one full single-source pass on generated tori of 10k, 100k and 1M
+// vertices (items/s = vertices settled per second; target >= 4 M/s on one
+// core). Features: feature points + f_q from a built mesh graph (target <= 60
+// ms for a 100k-face mesh), on generated meshes and, when ../shared is
+// beside the checkout, on the largest SHREC07 mesh. Single-threaded code.
+#include "reebkit/features/feature_points.h"
+#include "reebkit/features/quotient_function.h"
+#include "reebkit/geodesic/dijkstra.h"
+#include "reebkit/mesh/load_mesh.h"
+#include "reebkit/mesh/shapes.h"
+
+#include <benchmark/benchmark.h>
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+
+namespace {
+
+using namespace reebkit;
+
+// Meshes are built once per process and shared by the benchmarks.
+struct Case {
+  Mesh mesh;
+  MeshGraph graph;
+};
+
+const Case& torus_case(int major, int minor) {
+  static std::map<std::pair<int, int>, std::unique_ptr<Case>> cache;
+  auto& slot = cache[{major, minor}];
+  if (!slot) {
+    slot = std::make_unique<Case>();
+    slot->mesh = make_torus(major, minor, 1.0, 0.35);
+    slot->graph = build_mesh_graph(slot->mesh);
+  }
+  return *slot;
+}
+
+const Case& star_case(int levels) {
+  static std::map<int, std::unique_ptr<Case>> cache;
+  auto& slot = cache[levels];
+  if (!slot) {
+    StarOptions options;
+    options.arms = 6;
+    options.levels = levels;
+    slot = std::make_unique<Case>();
+    slot->mesh = make_star(options);
+    slot->graph = build_mesh_graph(slot->mesh);
+  }
+  return *slot;
+}
+
+void report_size(benchmark::State& state, const Case& c) {
+  state.counters["vertices"] = c.mesh.num_vertices();
+  state.counters["faces"] = c.mesh.num_triangles();
+}
+
+// Tori with major x minor = 10k, 100k, 1M vertices.
+void BM_DijkstraFullPass(benchmark::State& state) {
+  const Case& c = torus_case(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
+  DijkstraSolver solver(c.graph);
+  Index source = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(solver.run({source}).max_distance);
+    source = (source + 7919) % c.mesh.num_vertices();
+  }
+  state.SetItemsProcessed(state.iterations() * c.mesh.num_vertices());
+  report_size(state, c);
+}
+BENCHMARK(BM_DijkstraFullPass)->Args({200, 50})->Args({500, 200})->Args({2000, 500})->Unit(benchmark::kMillisecond);
+
+void run_features(benchmark::State& state, const Case& c) {
+  std::size_t count = 0;
+  for (auto _ : state) {
+    const FeaturePoints fp = extract_feature_points(c.graph);
+    const QuotientFunction fq = quotient_function(c.graph, fp.vertices);
+    benchmark::DoNotOptimize(fq.value.data());
+    count = fp.vertices.size();
+  }
+  state.counters["feature_points"] = static_cast<double>(count);
+  report_size(state, c);
+}
+
+// A torus of 50k vertices and exactly 100k faces.
+void BM_FeaturesAndQuotient_Torus100kFaces(benchmark::State& state) { run_features(state, torus_case(250, 200)); }
+BENCHMARK(BM_FeaturesAndQuotient_Torus100kFaces)->Unit(benchmark::kMillisecond);
+
+// Six-armed stars: levels 6 = 82k faces, 7 = 328k faces.
+void BM_FeaturesAndQuotient_Star(benchmark::State& state) { run_features(state, star_case(static_cast<int>(state.range(0)))); }
+BENCHMARK(BM_FeaturesAndQuotient_Star)->Arg(6)->Arg(7)->Unit(benchmark::kMillisecond);
+
+// A torus of 1M vertices (2M faces).
+void BM_FeaturesAndQuotient_Torus1M(benchmark::State& state) { run_features(state, torus_case(2000, 500)); }
+BENCHMARK(BM_FeaturesAndQuotient_Torus1M)->Unit(benchmark::kMillisecond);
+
+void BM_MeshGraph_Torus100kFaces(benchmark::State& state) {
+  const Case& c = torus_case(250, 200);
+  for (auto _ : state) benchmark::DoNotOptimize(build_mesh_graph(c.mesh).neighbor.data());
+  report_size(state, c);
+}
+BENCHMARK(BM_MeshGraph_Torus100kFaces)->Unit(benchmark::kMillisecond);
+
+// The largest SHREC07 Watertight mesh (27,824 vertices), when present.
+void register_shrec() {
+  const std::filesystem::path unpacked = std::filesystem::path(REEBKIT_UNPACKED_DATASETS) / "shrec07_watertight";
+  if (!std::filesystem::is_directory(unpacked)) return;
+  std::filesystem::path largest;
+  std::uintmax_t size = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(unpacked))
+    if (entry.path().extension() == ".off" && entry.file_size() > size) {
+      size = entry.file_size();
+      largest = entry.path();
+    }
+  if (largest.empty()) return;
+  static Case shrec;
+  shrec.mesh = load_mesh(largest).components.front();
+  shrec.graph = build_mesh_graph(shrec.mesh);
+  benchmark::RegisterBenchmark(("BM_FeaturesAndQuotient_SHREC07/" + largest.filename().string()).c_str(),
+                               [](benchmark::State& state) { run_features(state, shrec); })
+      ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark(("BM_DijkstraFullPass_SHREC07/" + largest.filename().string()).c_str(),
+                               [](benchmark::State& state) {
+                                 DijkstraSolver solver(shrec.graph);
+                                 for (auto _ : state) benchmark::DoNotOptimize(solver.run({0}).max_distance);
+                                 state.SetItemsProcessed(state.iterations() * shrec.mesh.num_vertices());
+                               })
+      ->Unit(benchmark::kMillisecond);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  register_shrec();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
