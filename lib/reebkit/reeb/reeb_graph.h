@@ -1,0 +1,74 @@
+// The high level Reeb graph by discrete level-line propagation (Tierny et al.
+// 2006, section 4.2, Definitions 6-9): f is propagated from its global
+// minimum, vertex by vertex in (f, vertex id) order; the discrete level lines
+// are the connected components of the candidate set C(t) (the unvisited
+// vertices next to visited ones), and the graph records how they split
+// (bifurcation), merge (junction) and vanish (termination). The graph is the
+// paper's *dual* Reeb graph: a node per connected region swept between two
+// events, an edge where a region hands over to the next.
+#pragma once
+
+#include "reebkit/core/mesh.h"
+#include "reebkit/mesh/mesh_graph.h"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace reebkit {
+
+/// The event that starts or ends a node's region.
+enum class NodeType : std::uint8_t {
+  Root,         ///< the region grown from the global minimum of f (starts only)
+  Bifurcation,  ///< eq. (9): a level line split
+  Junction,     ///< eq. (10): level lines merged
+  Termination   ///< eq. (11): a level line vanished (ends only: the node is a leaf)
+};
+
+/// One region of the segmentation: the vertices absorbed by one level line
+/// between two events.
+struct ReebNode {
+  /// How the region starts: Root, or the Bifurcation / Junction whose new
+  /// line it is. A line born at a step that both split and merged lines is a
+  /// Junction when several old lines flow into it, else a Bifurcation.
+  NodeType type = NodeType::Root;
+  /// How the region ends: Bifurcation (its line split), Junction (its line
+  /// merged with others) or Termination.
+  NodeType end = NodeType::Termination;
+  /// v_t of the step that created the node (the global minimum for the root).
+  Index birth_vertex = kInvalidIndex;
+  double fq_min = 0.0;  ///< smallest f over the region's vertices
+  double fq_max = 0.0;  ///< largest f over the region's vertices
+  Index vertex_count = 0;
+  /// Sum over the region's vertices of one third of the area of each incident
+  /// triangle.
+  double area = 0.0;
+  /// Area-weighted Euclidean barycenter of the region's vertices, where the
+  /// node is immersed (section 5.2).
+  Vec3 barycenter = Vec3::Zero();
+  // A line may merge into a junction before any vertex of it was absorbed;
+  // its node then has no vertices: vertex_count = 0, area = 0, f range and
+  // barycenter those of birth_vertex.
+};
+
+/// The dual Reeb graph and the segmentation it induces.
+struct ReebGraph {
+  /// Nodes in creation order (node 0 is the root); a node's id is its index.
+  std::vector<ReebNode> nodes;
+  /// (earlier node, later node): the region of the first hands over to the
+  /// second at the event ending the first. Sorted, no duplicates.
+  std::vector<std::array<Index, 2>> edges;
+  /// #V: the node of the level line that absorbed each vertex (the segmentation).
+  std::vector<Index> vertex_node;
+
+  Index num_nodes() const { return static_cast<Index>(nodes.size()); }
+  Index num_edges() const { return static_cast<Index>(edges.size()); }
+  /// Connected components of the graph.
+  Index connected_components() const;
+  /// First Betti number: #edges - #nodes + #components. Equals the genus of
+  /// a closed orientable surface when every handle shows up as a split and
+  /// a later merge of level lines.
+  Index independent_cycles() const;
+};
+
+}  // namespace reebkit
