@@ -1,0 +1,74 @@
+// Feature points per mesh over a classified collection (PSB .cla file), as a
+// Markdown table: per class the min / median / max count and every count.
+//
+//   build/experiments/feature_counts ../shared/.../shrec07_watertight.cla MESH_DIR > results/shrec07_feature_counts.md
+#include "reebkit/core/timer.h"
+#include "reebkit/features/feature_points.h"
+#include "reebkit/mesh/load_mesh.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace {
+
+struct MeshClass {
+  std::string name;
+  std::vector<std::string> models;
+};
+
+// PSB .cla: "PSB 1", "<classes> <models>", then per class "<name> <parent>
+// <count>" followed by <count> model ids.
+std::vector<MeshClass> read_cla(const std::string& path) {
+  std::ifstream in(path);
+  std::string magic;
+  int version = 0, classes = 0, models = 0;
+  if (!(in >> magic >> version >> classes >> models) || magic != "PSB")
+    throw std::runtime_error(path + ": not a PSB .cla file");
+  std::vector<MeshClass> out;
+  for (int c = 0; c < classes; ++c) {
+    MeshClass mc;
+    std::string parent;
+    int count = 0;
+    if (!(in >> mc.name >> parent >> count)) throw std::runtime_error(path + ": truncated class header");
+    mc.models.resize(static_cast<std::size_t>(count));
+    for (auto& m : mc.models)
+      if (!(in >> m)) throw std::runtime_error(path + ": truncated model list of class " + mc.name);
+    out.push_back(std::move(mc));
+  }
+  return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 3) {
+    std::cerr << "usage: feature_counts CLASSES.cla MESH_DIR\n";
+    return 2;
+  }
+  try {
+    const auto classes = read_cla(argv[1]);
+    reebkit::Timer timer;
+    std::cout << "| class | min | median | max | feature points per mesh |\n|---|---:|---:|---:|---|\n";
+    for (const auto& c : classes) {
+      std::vector<std::size_t> counts;
+      for (const auto& m : c.models) {
+        const auto mesh = reebkit::load_mesh(std::filesystem::path(argv[2]) / (m + ".off")).components.front();
+        counts.push_back(reebkit::extract_feature_points(reebkit::build_mesh_graph(mesh)).vertices.size());
+      }
+      auto s = counts;
+      std::sort(s.begin(), s.end());
+      std::cout << "| " << c.name << " | " << s.front() << " | " << s[s.size() / 2] << " | " << s.back() << " |";
+      for (const std::size_t n : counts) std::cout << ' ' << n;
+      std::cout << " |\n";
+    }
+    std::cerr << "feature_counts: " << timer.lap() / 1000.0 << " s\n";
+  } catch (const std::exception& e) {
+    std::cerr << "feature_counts: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
