@@ -1,0 +1,85 @@
+// The bookkeeping both Reeb graph builders share (reeb_graph.h for the fast
+// one, reeb_reference.h for the paper's O(n^2) one): turning the level-line
+// changes of each propagation step into nodes and edges of the dual Reeb graph
+// (Tierny et al. 2006, Definitions 7-9), and the region attributes of section
+// 5.2 once every vertex is labeled. The builders only have to say, at each
+// step, which lines changed into which.
+#pragma once
+
+#include "reebkit/reeb/reeb_graph.h"
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <queue>
+#include <utility>
+#include <vector>
+
+namespace reebkit {
+
+/// Where a vertex stands in the propagation.
+enum class VertexState : std::uint8_t { Unvisited, Candidate, Visited };
+
+/// The candidate set C(t) as a binary heap keyed by (f, vertex id): the
+/// propagation absorbs its smallest vertex next.
+using CandidateQueue =
+    std::priority_queue<std::pair<double, Index>, std::vector<std::pair<double, Index>>, std::greater<>>;
+
+/// Throws InvalidArgument (message starting with `who`) unless `mesh`,
+/// `graph` and `f` describe the same non-empty vertex set and f is finite.
+void check_reeb_inputs(const char* who, const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f);
+
+/// The vertex of smallest (f, id).
+Index global_minimum(const std::vector<double>& f);
+
+/// How the level lines touched by one step changed. The other lines are
+/// unchanged and keep their nodes.
+struct LineChange {
+  /// Nodes of the old lines that changed: the line of v_t first, then the
+  /// lines merged into it through v_t's new candidate neighbours.
+  std::vector<Index> old_nodes;
+  /// Number of new lines (those holding a neighbour of v_t), in the order of
+  /// their first vertex in v_t's one-ring.
+  Index new_lines = 0;
+  /// (index into old_nodes, index of a new line): the new line holds vertices
+  /// of the old one, or (for old line 0) of v_t's neighbourhood.
+  std::vector<std::array<Index, 2>> links;
+
+  void clear() {
+    old_nodes.clear();
+    new_lines = 0;
+    links.clear();
+  }
+};
+
+/// Records the dual Reeb graph while the level lines evolve.
+class DualGraphRecorder {
+ public:
+  explicit DualGraphRecorder(Index num_vertices);
+
+  /// Creates the root node of a propagation starting at `minimum`.
+  Index start_root(Index minimum);
+
+  /// Labels v_t with the node of the line that absorbed it.
+  void absorb(Index v, Index node) { graph_.vertex_node[static_cast<std::size_t>(v)] = node; }
+
+  /// Applies the change of step v_t and returns the node of each new line in
+  /// `new_nodes`. One old line becoming one new line is no event: the line
+  /// keeps its node. No new line is a termination (eq. 11). Otherwise every
+  /// old node ends and every new line starts a node linked from its old ones:
+  /// a bifurcation (eq. 9) when one old line feeds it, a junction (eq. 10)
+  /// when several do.
+  void step(Index v, const LineChange& change, std::vector<Index>& new_nodes);
+
+  /// The finished graph: node attributes from the segmentation, edges sorted.
+  /// \pre every vertex has been absorbed.
+  ReebGraph finish(const Mesh& mesh, const std::vector<double>& f);
+
+ private:
+  Index add_node(NodeType type, Index birth_vertex);
+
+  ReebGraph graph_;
+  std::vector<Index> parents_;  // per new line of the current step
+};
+
+}  // namespace reebkit
