@@ -3,7 +3,6 @@
 #include "reebkit/core/error.h"
 
 #include <algorithm>
-#include <functional>
 #include <string>
 
 namespace reebkit {
@@ -36,10 +35,36 @@ const DistanceField& DijkstraSolver::run(const std::vector<Index>& sources, cons
   field_.max_distance = 0.0;
   field_.reached = 0;
 
-  // Binary min-heap of (distance, vertex) with lazy deletion: ties pop by id.
+  // 4-ary min-heap of (distance, vertex) with lazy deletion: ties pop by id.
+  // Four children per node halve the depth of a binary heap, and the
+  // siblings share a cache line.
   const auto push = [this](double d, Index v) {
     heap_.emplace_back(d, v);
-    std::push_heap(heap_.begin(), heap_.end(), std::greater<>{});
+    std::size_t i = heap_.size() - 1;
+    while (i > 0) {
+      const std::size_t parent = (i - 1) / 4;
+      if (!(heap_[i] < heap_[parent])) break;
+      std::swap(heap_[i], heap_[parent]);
+      i = parent;
+    }
+  };
+  const auto pop = [this]() {
+    const std::pair<double, Index> top = heap_.front();
+    heap_.front() = heap_.back();
+    heap_.pop_back();
+    const std::size_t size = heap_.size();
+    std::size_t i = 0;
+    while (true) {
+      const std::size_t first = 4 * i + 1;
+      if (first >= size) break;
+      std::size_t best = first;
+      for (std::size_t c = first + 1; c < std::min(first + 4, size); ++c)
+        if (heap_[c] < heap_[best]) best = c;
+      if (!(heap_[best] < heap_[i])) break;
+      std::swap(heap_[i], heap_[best]);
+      i = best;
+    }
+    return top;
   };
   for (std::size_t s = 0; s < sources.size(); ++s) {
     const Index v = sources[s];
@@ -57,9 +82,7 @@ const DistanceField& DijkstraSolver::run(const std::vector<Index>& sources, cons
   const Index* neighbor = graph_.neighbor.data();
   const double* length = graph_.length.data();
   while (!heap_.empty()) {
-    std::pop_heap(heap_.begin(), heap_.end(), std::greater<>{});
-    const auto [d, v] = heap_.back();
-    heap_.pop_back();
+    const auto [d, v] = pop();
     if (d > dist[v]) continue;  // stale entry
     settled_.push_back(v);
     if (d > field_.max_distance || field_.farthest == kInvalidIndex ||
