@@ -24,8 +24,8 @@ std::vector<double> height(const Mesh& mesh, const Vec3& direction) {
   return f;
 }
 
-// Banchoff's index of a vertex of a closed surface: 1 for extrema,
-// 1 - L+ for the others (a k-fold saddle has index 1 - k... with L+ = k).
+// Banchoff's index of a vertex of a closed surface: 1 for extrema, 1 - L+
+// for the others (a saddle whose link alternates k times has index 1 - k).
 int index_of(const MeshGraph& g, const std::vector<double>& f, Index v) {
   const LinkCount c = count_link_components(g, f, v);
   if (c.upper == 0 || c.lower == 0) return 1;
@@ -55,6 +55,21 @@ LinkCount brute_force_link(const Mesh& mesh, const std::vector<double>& f, Index
   link.erase(std::unique(link.begin(), link.end()), link.end());
   for (const Index a : link)
     if (find(a) == a) (sos_less(f, v, a) ? c.upper : c.lower) += 1;
+  return c;
+}
+
+struct TypeCounts {
+  int minima = 0, maxima = 0, saddles = 0;
+};
+
+TypeCounts count_types(const MeshGraph& g, const std::vector<double>& f) {
+  TypeCounts c;
+  for (Index v = 0; v < g.num_vertices(); ++v) {
+    const CriticalType t = classify_vertex(g, f, v);
+    c.minima += t == CriticalType::Minimum;
+    c.maxima += t == CriticalType::Maximum;
+    c.saddles += t == CriticalType::Saddle;
+  }
   return c;
 }
 
@@ -90,16 +105,10 @@ TEST(CriticalPoints, HeightOnSphereHasOneMinimumAndOneMaximum) {
   const Mesh sphere = make_icosphere(3);
   const MeshGraph g = build_mesh_graph(sphere);
   const std::vector<double> f = height(sphere, Vec3(0.3, 0.2, 0.9).normalized());
-  int minima = 0, maxima = 0, saddles = 0;
-  for (Index v = 0; v < g.num_vertices(); ++v) {
-    const CriticalType t = classify_vertex(g, f, v);
-    minima += t == CriticalType::Minimum;
-    maxima += t == CriticalType::Maximum;
-    saddles += t == CriticalType::Saddle;
-  }
-  EXPECT_EQ(minima, 1);
-  EXPECT_EQ(maxima, 1);
-  EXPECT_EQ(saddles, 0);
+  const TypeCounts c = count_types(g, f);
+  EXPECT_EQ(c.minima, 1);
+  EXPECT_EQ(c.maxima, 1);
+  EXPECT_EQ(c.saddles, 0);
   EXPECT_EQ(local_extrema(g, f).size(), 2u);
 }
 
@@ -109,16 +118,10 @@ TEST(CriticalPoints, HeightAcrossAStandingTorusHasTwoSaddles) {
   const Mesh torus = make_torus(40, 16);
   const MeshGraph g = build_mesh_graph(torus);
   const std::vector<double> f = height(torus, Vec3(1.0, 0.013, 0.021).normalized());
-  int minima = 0, maxima = 0, saddles = 0;
-  for (Index v = 0; v < g.num_vertices(); ++v) {
-    const CriticalType t = classify_vertex(g, f, v);
-    minima += t == CriticalType::Minimum;
-    maxima += t == CriticalType::Maximum;
-    saddles += t == CriticalType::Saddle;
-  }
-  EXPECT_EQ(minima, 1);
-  EXPECT_EQ(maxima, 1);
-  EXPECT_EQ(saddles, 2);
+  const TypeCounts c = count_types(g, f);
+  EXPECT_EQ(c.minima, 1);
+  EXPECT_EQ(c.maxima, 1);
+  EXPECT_EQ(c.saddles, 2);
 }
 
 TEST(CriticalPoints, TiesAreBrokenByVertexId) {
