@@ -1,8 +1,19 @@
 #include "reebkit/reeb/reeb_graph.h"
 
+#include "reeb/reeb_test_util.h"
+#include "reebkit/core/error.h"
+#include "reebkit/mesh/load_mesh.h"
+#include "reebkit/mesh/shapes.h"
+#include "reebkit/reeb/reeb_reference.h"
+#include "support/test_support.h"
+
 #include <gtest/gtest.h>
 
-namespace reebkit {
+#include <cmath>
+#include <random>
+#include <string>
+
+namespace reebkit::test {
 namespace {
 
 ReebGraph graph_with(Index nodes, std::vector<std::array<Index, 2>> edges) {
@@ -27,5 +38,157 @@ TEST(ReebGraph, CyclesAreEdgesMinusNodesPlusComponents) {
   EXPECT_EQ(two.independent_cycles(), 2);
 }
 
+/// build_reeb_graph equals reference_reeb_graph exactly: same nodes (in the
+/// same order, with the same attributes), edges and segmentation.
+void expect_same_as_reference(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f) {
+  const ReebGraph fast = build_reeb_graph(mesh, graph, f);
+  const ReebGraph reference = reference_reeb_graph(mesh, graph, f);
+  ASSERT_EQ(fast.num_nodes(), reference.num_nodes()) << "fast " << summary(fast) << "; reference " << summary(reference);
+  for (std::size_t n = 0; n < fast.nodes.size(); ++n) {
+    const ReebNode& a = fast.nodes[n];
+    const ReebNode& b = reference.nodes[n];
+    EXPECT_TRUE(a.type == b.type && a.end == b.end && a.birth_vertex == b.birth_vertex && a.fq_min == b.fq_min &&
+                a.fq_max == b.fq_max && a.vertex_count == b.vertex_count && a.area == b.area &&
+                a.barycenter == b.barycenter)
+        << "node " << n;
+  }
+  EXPECT_EQ(fast.edges, reference.edges);
+  EXPECT_EQ(fast.vertex_node, reference.vertex_node);
+}
+
+void expect_same_as_reference(const ReebInput& in) { expect_same_as_reference(in.mesh, in.graph, in.fq); }
+
+/// f = uniform random values: level lines split and merge at almost every
+/// step, often both at once.
+std::vector<double> random_function(Index n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<double> f(static_cast<std::size_t>(n));
+  for (double& x : f) x = u(rng);
+  return f;
+}
+
+/// f = a coordinate: the height function of the classic Reeb graph pictures.
+std::vector<double> height(const Mesh& mesh, int axis) {
+  std::vector<double> f(static_cast<std::size_t>(mesh.num_vertices()));
+  for (Index v = 0; v < mesh.num_vertices(); ++v) f[static_cast<std::size_t>(v)] = mesh.vertices(v, axis);
+  return f;
+}
+
+TEST(BuildReebGraph, EqualsReferenceOnStars) {
+  for (const int arms : {2, 3, 4, 5, 6, 7, 8}) {
+    for (const int levels : {3, 4}) {
+      StarOptions options;
+      options.arms = arms;
+      options.levels = levels;
+      options.twist = 0.1 * arms;
+      SCOPED_TRACE(std::to_string(arms) + " arms, " + std::to_string(levels) + " levels");
+      expect_same_as_reference(reeb_input(make_star(options)));
+    }
+  }
+}
+
+TEST(BuildReebGraph, EqualsReferenceOnToriAndSpheres) {
+  for (const auto& [major, minor] : {std::pair{40, 14}, std::pair{24, 8}, std::pair{64, 20}, std::pair{9, 5}}) {
+    SCOPED_TRACE(std::to_string(major) + "x" + std::to_string(minor) + " torus");
+    const ReebInput in = reeb_input(make_torus(major, minor));
+    expect_same_as_reference(in);
+    for (const int axis : {0, 1, 2}) expect_same_as_reference(in.mesh, in.graph, height(in.mesh, axis));
+  }
+  for (const int levels : {0, 1, 2, 3, 4}) {
+    SCOPED_TRACE(std::to_string(levels) + " levels sphere");
+    expect_same_as_reference(reeb_input(make_icosphere(levels)));
+  }
+}
+
+TEST(BuildReebGraph, EqualsReferenceOnRandomFunctions) {
+  const std::vector<Mesh> meshes = {make_icosphere(3), make_torus(30, 12), make_grid(20, 15), make_star(StarOptions{4, 3})};
+  unsigned seed = 1;
+  for (const Mesh& mesh : meshes) {
+    const MeshGraph graph = build_mesh_graph(mesh);
+    for (int run = 0; run < 5; ++run, ++seed) {
+      SCOPED_TRACE("seed " + std::to_string(seed));
+      std::vector<double> f = random_function(mesh.num_vertices(), seed);
+      expect_same_as_reference(mesh, graph, f);
+      for (double& x : f) x = std::floor(4 * x);  // ties everywhere: the vertex id decides
+      expect_same_as_reference(mesh, graph, f);
+    }
+    expect_same_as_reference(mesh, graph, std::vector<double>(static_cast<std::size_t>(mesh.num_vertices()), 0.0));
+  }
+}
+
+// Two cubes sharing one corner: that corner's ring is Irregular (two fans).
+TEST(BuildReebGraph, EqualsReferenceAtNonManifoldVertices) {
+  const Mesh cube = make_cube();
+  Mesh mesh = disjoint_union(cube, cube);
+  mesh.vertices.bottomRows(8).rowwise() += Eigen::RowVector3d(1, 1, 1);  // b's corner (0,0,0) lands on (1,1,1)
+  const auto at_corner = [&mesh](Index first) {
+    while (mesh.vertices.row(first) != Eigen::RowVector3d(1, 1, 1)) ++first;
+    return first;
+  };
+  const Index corner = at_corner(0);
+  const Index twin = at_corner(8);
+  // b uses a's corner instead of its own, and the last vertex fills the hole.
+  for (Index t = 0; t < mesh.num_triangles(); ++t) {
+    for (int k = 0; k < 3; ++k) {
+      if (mesh.triangles(t, k) == twin) mesh.triangles(t, k) = corner;
+      if (mesh.triangles(t, k) == 15) mesh.triangles(t, k) = twin;
+    }
+  }
+  mesh.vertices.row(twin) = mesh.vertices.row(15);
+  mesh.vertices.conservativeResize(15, 3);
+  const MeshGraph graph = build_mesh_graph(mesh);
+  ASSERT_EQ(graph.ring[static_cast<std::size_t>(corner)], RingKind::Irregular);
+  for (unsigned seed = 1; seed <= 20; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    expect_same_as_reference(mesh, graph, random_function(mesh.num_vertices(), seed));
+  }
+  for (const int axis : {0, 1, 2}) expect_same_as_reference(mesh, graph, height(mesh, axis));
+}
+
+TEST(BuildReebGraph, OneRootPerComponentWhenAsked) {
+  const ReebInput torus = reeb_input(make_torus(30, 10));
+  const ReebInput sphere = reeb_input(make_icosphere(2));
+  const Mesh pair = disjoint_union(torus.mesh, sphere.mesh);
+  const MeshGraph graph = build_mesh_graph(pair);
+  std::vector<double> f = torus.fq;
+  f.insert(f.end(), sphere.fq.begin(), sphere.fq.end());
+  EXPECT_THROW(build_reeb_graph(pair, graph, f), InvalidArgument);
+  ReebOptions options;
+  options.all_components = true;
+  const ReebGraph g = build_reeb_graph(pair, graph, f, options);
+  const ReebGraph a = build_reeb_graph(torus.mesh, torus.graph, torus.fq);
+  const ReebGraph b = build_reeb_graph(sphere.mesh, sphere.graph, sphere.fq);
+  EXPECT_EQ(g.connected_components(), 2);
+  EXPECT_EQ(g.independent_cycles(), 1);
+  EXPECT_EQ(g.num_nodes(), a.num_nodes() + b.num_nodes());
+  EXPECT_EQ(count_nodes(g, &ReebNode::type, NodeType::Root), 2);
+  // Both minima are 0: the torus's comes first by vertex id.
+  for (Index v = 0; v < torus.mesh.num_vertices(); ++v)
+    EXPECT_EQ(g.vertex_node[static_cast<std::size_t>(v)], a.vertex_node[static_cast<std::size_t>(v)]);
+  for (Index v = 0; v < sphere.mesh.num_vertices(); ++v)
+    EXPECT_EQ(g.vertex_node[static_cast<std::size_t>(v + torus.mesh.num_vertices())],
+              b.vertex_node[static_cast<std::size_t>(v)] + a.num_nodes());
+}
+
+// A sample of the CGAL meshes: closed ones of every genus the set has below
+// 10k vertices, and some with boundaries (Open rings).
+TEST(BuildReebGraph, EqualsReferenceOnCgalMeshes) {
+  REEBKIT_REQUIRE_DATASET(dir, "cgal_meshes");
+  for (const char* name : {"pipe.off", "joint.off", "pinion.off", "helmet.off", "anchor.off", "couplingdown.off",
+                           "knot1.off", "elephant.off", "femur.off", "cheese.off", "turbine.off", "cow.off",
+                           "hand.off", "bull.off", "mushroom.off", "elephant-with-holes.off", "head.off",
+                           "holes.off", "nefertiti.off", "pig.off", "cylinder.off"}) {
+    SCOPED_TRACE(name);
+    expect_same_as_reference(reeb_input(load_mesh(dir / name).components[0]));
+  }
+}
+
+TEST(BuildReebGraph, RejectsMismatchedInputs) {
+  const ReebInput in = reeb_input(make_icosphere(1));
+  EXPECT_THROW(build_reeb_graph(in.mesh, in.graph, {1.0, 2.0}), InvalidArgument);
+  EXPECT_THROW(build_reeb_graph(Mesh{}, MeshGraph{}, {}), InvalidArgument);
+}
+
 }  // namespace
-}  // namespace reebkit
+}  // namespace reebkit::test

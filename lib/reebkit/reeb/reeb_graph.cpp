@@ -1,5 +1,10 @@
 #include "reebkit/reeb/reeb_graph.h"
 
+#include "reebkit/core/error.h"
+#include "reebkit/features/critical_points.h"
+#include "reebkit/reeb/dual_graph_recorder.h"
+
+#include <algorithm>
 #include <numeric>
 
 namespace reebkit {
@@ -24,5 +29,300 @@ Index ReebGraph::connected_components() const {
 }
 
 Index ReebGraph::independent_cycles() const { return num_edges() - num_nodes() + connected_components(); }
+
+namespace {
+
+/// The level lines of C(t), kept up to date as the propagation absorbs one
+/// vertex after the other. A line is a doubly-linked list of its vertices
+/// threaded through flat per-vertex arrays, with a line id per vertex; line
+/// ids are recycled.
+class IncrementalLevelLines {
+ public:
+  IncrementalLevelLines(const MeshGraph& graph, const std::vector<double>& f, DualGraphRecorder& recorder)
+      : graph_(graph),
+        f_(f),
+        recorder_(recorder),
+        state_(f.size(), VertexState::Unvisited),
+        line_of_(f.size(), kInvalidIndex),
+        next_(f.size(), kInvalidIndex),
+        prev_(f.size(), kInvalidIndex),
+        search_mark_(f.size(), -1) {}
+
+  /// Propagates from `minimum` over its whole connected component.
+  void propagate_from(Index minimum) {
+    // C starts as the minimum alone: one line, the root's.
+    enter(minimum, new_line(recorder_.start_root(minimum)));
+    while (!queue_.empty()) {
+      const Index v = queue_.top().second;
+      queue_.pop();
+      absorb(v);
+    }
+  }
+
+  bool visited(Index v) const { return state_[at(v)] == VertexState::Visited; }
+  Index visited_count() const { return visited_count_; }
+
+ private:
+  static std::size_t at(Index i) { return static_cast<std::size_t>(i); }
+
+  Index new_line(Index node) {
+    Index line;
+    if (free_lines_.empty()) {
+      line = static_cast<Index>(head_.size());
+      head_.push_back(kInvalidIndex);
+      size_.push_back(0);
+      node_.push_back(node);
+      slot_.push_back(kInvalidIndex);
+    } else {
+      line = free_lines_.back();
+      free_lines_.pop_back();
+      node_[at(line)] = node;
+    }
+    return line;
+  }
+
+  void link(Index line, Index v) {
+    line_of_[at(v)] = line;
+    prev_[at(v)] = kInvalidIndex;
+    next_[at(v)] = head_[at(line)];
+    if (head_[at(line)] != kInvalidIndex) prev_[at(head_[at(line)])] = v;
+    head_[at(line)] = v;
+    ++size_[at(line)];
+  }
+
+  void unlink(Index line, Index v) {
+    const Index p = prev_[at(v)];
+    const Index n = next_[at(v)];
+    (p == kInvalidIndex ? head_[at(line)] : next_[at(p)]) = n;
+    if (n != kInvalidIndex) prev_[at(n)] = p;
+    --size_[at(line)];
+  }
+
+  /// v joins C(t) in `line`.
+  void enter(Index v, Index line) {
+    state_[at(v)] = VertexState::Candidate;
+    link(line, v);
+    queue_.emplace(f_[at(v)], v);
+  }
+
+  /// Merges lines a and b by relabelling the smaller; returns the survivor.
+  Index merge(Index a, Index b) {
+    if (size_[at(a)] < size_[at(b)]) std::swap(a, b);
+    Index tail = kInvalidIndex;
+    for (Index u = head_[at(b)]; u != kInvalidIndex; u = next_[at(u)]) {
+      line_of_[at(u)] = a;
+      tail = u;
+    }
+    next_[at(tail)] = head_[at(a)];
+    prev_[at(head_[at(a)])] = tail;
+    head_[at(a)] = head_[at(b)];
+    size_[at(a)] += size_[at(b)];
+    head_[at(b)] = kInvalidIndex;
+    size_[at(b)] = 0;
+    free_lines_.push_back(b);
+    return a;
+  }
+
+  /// Step t: v_t leaves C, its unvisited neighbours enter it.
+  void absorb(Index v) {
+    Index line = line_of_[at(v)];
+    const Index node = node_[at(line)];
+    recorder_.absorb(v, node);
+    unlink(line, v);
+    state_[at(v)] = VertexState::Visited;
+    ++visited_count_;
+    change_.clear();
+    change_.old_nodes.push_back(node);
+    merged_from_.clear();
+
+    // The new candidates join v's line; every other line they touch merges
+    // into it (remembering one of its vertices to find where it ends up).
+    entered_.clear();
+    const Index begin = graph_.offset[at(v)];
+    const Index end = graph_.offset[at(v) + 1];
+    for (Index i = begin; i < end; ++i) {
+      const Index w = graph_.neighbor[at(i)];
+      if (state_[at(w)] != VertexState::Unvisited) continue;
+      enter(w, line);
+      entered_.push_back(w);
+    }
+    for (const Index w : entered_) {
+      for (Index i = graph_.offset[at(w)]; i < graph_.offset[at(w) + 1]; ++i) {
+        const Index u = graph_.neighbor[at(i)];
+        if (state_[at(u)] != VertexState::Candidate || line_of_[at(u)] == line) continue;
+        change_.old_nodes.push_back(node_[at(line_of_[at(u)])]);
+        merged_from_.push_back(u);
+        line = merge(line, line_of_[at(u)]);
+        node_[at(line)] = node;
+      }
+    }
+
+    split_at(v, line);
+
+    // The new lines are those holding a neighbour of v, in one-ring order.
+    new_lines_.clear();
+    for (Index i = begin; i < end; ++i) {
+      const Index w = graph_.neighbor[at(i)];
+      if (state_[at(w)] != VertexState::Candidate) continue;
+      const Index l = line_of_[at(w)];
+      if (slot_[at(l)] != kInvalidIndex) continue;
+      slot_[at(l)] = static_cast<Index>(new_lines_.size());
+      change_.links.push_back({0, slot_[at(l)]});
+      new_lines_.push_back(l);
+    }
+    change_.new_lines = static_cast<Index>(new_lines_.size());
+    for (std::size_t k = 0; k < merged_from_.size(); ++k)
+      change_.links.push_back({static_cast<Index>(k + 1), slot_[at(line_of_[at(merged_from_[k])])]});
+    recorder_.step(v, change_, new_nodes_);
+    for (std::size_t k = 0; k < new_lines_.size(); ++k) {
+      node_[at(new_lines_[k])] = new_nodes_[k];
+      slot_[at(new_lines_[k])] = kInvalidIndex;
+    }
+    if (new_lines_.empty()) free_lines_.push_back(line);  // termination: the line is empty
+  }
+
+  /// Splits `line`, which v just left, into its connected components. Each
+  /// component holds a neighbour of v, and neighbours consecutive around v
+  /// (sharing a triangle with it) stay connected, so there is one search per
+  /// arc of candidate neighbours around v. The searches advance in turns, one
+  /// vertex each, searches that meet join one group, and they stop once at
+  /// most one group is still growing: every finished group is a whole
+  /// component and becomes a new line, the growing one keeps `line`.
+  void split_at(Index v, Index line) {
+    seeds_.clear();
+    const Index begin = graph_.offset[at(v)];
+    const Index end = graph_.offset[at(v) + 1];
+    const auto candidate = [&](Index i) { return state_[at(graph_.neighbor[at(i)])] == VertexState::Candidate; };
+    bool any = false;
+    for (Index i = begin; i < end; ++i) {
+      if (!candidate(i)) continue;
+      any = true;
+      // The slot before i around v; link_next[end - 1] is set for closed rings only.
+      const Index p = i > begin ? i - 1 : end - 1;
+      if (p == i || !candidate(p) || graph_.link_next[at(p)] == 0) seeds_.push_back(graph_.neighbor[at(i)]);
+    }
+    if (any && seeds_.empty()) seeds_.push_back(graph_.neighbor[at(begin)]);  // the whole ring is one arc
+    const auto k = seeds_.size();
+    if (k < 2) return;
+
+    const Index base = next_search_;
+    next_search_ += static_cast<Index>(k);
+    if (queues_.size() < k) queues_.resize(k);
+    heads_.assign(k, 0);
+    group_.resize(k);
+    for (std::size_t s = 0; s < k; ++s) {
+      queues_[s].assign(1, seeds_[s]);
+      search_mark_[at(seeds_[s])] = base + static_cast<Index>(s);
+      group_[s] = s;
+    }
+    const auto find = [this](std::size_t s) {
+      while (group_[s] != s) s = group_[s] = group_[group_[s]];
+      return s;
+    };
+    growing_.assign(k, 0);
+    for (;;) {
+      for (std::size_t s = 0; s < k; ++s) {
+        if (heads_[s] == queues_[s].size()) continue;
+        const Index u = queues_[s][heads_[s]++];
+        for (Index i = graph_.offset[at(u)]; i < graph_.offset[at(u) + 1]; ++i) {
+          const Index w = graph_.neighbor[at(i)];
+          if (state_[at(w)] != VertexState::Candidate) continue;
+          const Index mark = search_mark_[at(w)];
+          if (mark < base) {
+            search_mark_[at(w)] = base + static_cast<Index>(s);
+            queues_[s].push_back(w);
+          } else {
+            group_[find(static_cast<std::size_t>(mark - base))] = find(s);
+          }
+        }
+      }
+      std::fill(growing_.begin(), growing_.end(), 0);
+      std::size_t groups_growing = 0;
+      for (std::size_t s = 0; s < k; ++s) {
+        if (heads_[s] == queues_[s].size()) continue;
+        std::uint8_t& g = growing_[find(s)];
+        groups_growing += g == 0;
+        g = 1;
+      }
+      if (groups_growing > 1) continue;
+      // The line keeps the growing group, or when all finished, the largest.
+      std::size_t keep = k;
+      std::vector<std::size_t>& sizes = group_size_;
+      sizes.assign(k, 0);
+      for (std::size_t s = 0; s < k; ++s) {
+        const std::size_t r = find(s);
+        sizes[r] += queues_[s].size();
+        if (growing_[r] != 0) keep = r;
+      }
+      if (keep == k)
+        for (std::size_t s = 0; s < k; ++s)
+          if (find(s) == s && (keep == k || sizes[s] > sizes[keep])) keep = s;
+      for (std::size_t r = 0; r < k; ++r) {
+        if (find(r) != r || r == keep) continue;
+        const Index piece = new_line(node_[at(line)]);
+        for (std::size_t s = 0; s < k; ++s) {
+          if (find(s) != r) continue;
+          for (const Index u : queues_[s]) {
+            unlink(line, u);
+            link(piece, u);
+          }
+        }
+      }
+      return;
+    }
+  }
+
+  const MeshGraph& graph_;
+  const std::vector<double>& f_;
+  DualGraphRecorder& recorder_;
+  CandidateQueue queue_;
+  Index visited_count_ = 0;
+  // Per vertex.
+  std::vector<VertexState> state_;
+  std::vector<Index> line_of_;
+  std::vector<Index> next_;
+  std::vector<Index> prev_;
+  std::vector<Index> search_mark_;  // id of the split search that reached the vertex
+  // Per line id.
+  std::vector<Index> head_;
+  std::vector<Index> size_;
+  std::vector<Index> node_;
+  std::vector<Index> slot_;  // index among the new lines of the current step, else kInvalidIndex
+  std::vector<Index> free_lines_;
+  // Buffers of one step.
+  LineChange change_;
+  std::vector<Index> new_nodes_;
+  std::vector<Index> entered_;
+  std::vector<Index> merged_from_;
+  std::vector<Index> new_lines_;
+  std::vector<Index> seeds_;
+  std::vector<std::vector<Index>> queues_;
+  std::vector<std::size_t> heads_;
+  std::vector<std::size_t> group_;
+  std::vector<std::uint8_t> growing_;
+  std::vector<std::size_t> group_size_;
+  Index next_search_ = 0;
+};
+
+}  // namespace
+
+ReebGraph build_reeb_graph(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f,
+                           const ReebOptions& options) {
+  check_reeb_inputs("build_reeb_graph", mesh, graph, f);
+  DualGraphRecorder recorder(mesh.num_vertices());
+  IncrementalLevelLines lines(graph, f, recorder);
+  lines.propagate_from(global_minimum(f));
+  if (lines.visited_count() < mesh.num_vertices()) {
+    if (!options.all_components)
+      throw InvalidArgument("build_reeb_graph: the mesh graph is not connected (see ReebOptions::all_components)");
+    // The next root is the smallest unvisited vertex by (f, id).
+    std::vector<Index> order(f.size());
+    std::iota(order.begin(), order.end(), Index{0});
+    std::sort(order.begin(), order.end(), [&f](Index a, Index b) { return sos_less(f, a, b); });
+    for (const Index v : order)
+      if (!lines.visited(v)) lines.propagate_from(v);
+  }
+  return recorder.finish(mesh, f);
+}
 
 }  // namespace reebkit

@@ -71,4 +71,25 @@ struct ReebGraph {
   Index independent_cycles() const;
 };
 
+struct ReebOptions {
+  /// false (default): the graph must be connected, as f_q needs; a
+  /// propagation that leaves vertices unreached throws InvalidArgument.
+  /// true: one root per connected component, each started at the
+  /// component's minimum (components in the order of their minima).
+  bool all_components = false;
+};
+
+/// The dual Reeb graph of f by discrete level-line propagation from the
+/// global minimum of f, vertices compared by (value, vertex id). The level
+/// lines are kept up to date incrementally: lines meeting at v_t's new
+/// candidate neighbours are merged by relabelling the smaller one, and a line
+/// can only split where v_t left it, which breadth-first searches started
+/// from the arcs of v_t's one-ring settle in time proportional to all but
+/// the largest piece. O(n log n) in practice. Gives exactly the graph of
+/// reference_reeb_graph (reeb_reference.h).
+/// \pre mesh, graph and f describe the same non-empty vertex set and f is
+///      finite; throws InvalidArgument otherwise.
+ReebGraph build_reeb_graph(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f,
+                           const ReebOptions& options = {});
+
 }  // namespace reebkit
