@@ -43,7 +43,8 @@ TEST(ReebGraph, CyclesAreEdgesMinusNodesPlusComponents) {
 void expect_same_as_reference(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f) {
   const ReebGraph fast = build_reeb_graph(mesh, graph, f);
   const ReebGraph reference = reference_reeb_graph(mesh, graph, f);
-  ASSERT_EQ(fast.num_nodes(), reference.num_nodes()) << "fast " << summary(fast) << "; reference " << summary(reference);
+  ASSERT_EQ(fast.num_nodes(), reference.num_nodes())
+      << "fast " << summary(fast) << "; reference " << summary(reference);
   for (std::size_t n = 0; n < fast.nodes.size(); ++n) {
     const ReebNode& a = fast.nodes[n];
     const ReebNode& b = reference.nodes[n];
@@ -102,7 +103,8 @@ TEST(BuildReebGraph, EqualsReferenceOnToriAndSpheres) {
 }
 
 TEST(BuildReebGraph, EqualsReferenceOnRandomFunctions) {
-  const std::vector<Mesh> meshes = {make_icosphere(3), make_torus(30, 12), make_grid(20, 15), make_star(StarOptions{4, 3})};
+  const std::vector<Mesh> meshes = {make_icosphere(3), make_torus(30, 12), make_grid(20, 15),
+                                    make_star(StarOptions{4, 3})};
   unsigned seed = 1;
   for (const Mesh& mesh : meshes) {
     const MeshGraph graph = build_mesh_graph(mesh);
@@ -175,10 +177,12 @@ TEST(BuildReebGraph, OneRootPerComponentWhenAsked) {
 // 10k vertices, and some with boundaries (Open rings).
 TEST(BuildReebGraph, EqualsReferenceOnCgalMeshes) {
   REEBKIT_REQUIRE_DATASET(dir, "cgal_meshes");
-  for (const char* name : {"pipe.off", "joint.off", "pinion.off", "helmet.off", "anchor.off", "couplingdown.off",
-                           "knot1.off", "elephant.off", "femur.off", "cheese.off", "turbine.off", "cow.off",
-                           "hand.off", "bull.off", "mushroom.off", "elephant-with-holes.off", "head.off",
-                           "holes.off", "nefertiti.off", "pig.off", "cylinder.off"}) {
+  for (const char* name : {"pipe.off",    "joint.off",        "pinion.off",    "helmet.off",
+                           "anchor.off",  "couplingdown.off", "knot1.off",     "elephant.off",
+                           "femur.off",   "cheese.off",       "turbine.off",   "cow.off",
+                           "hand.off",    "bull.off",         "mushroom.off",  "elephant-with-holes.off",
+                           "head.off",    "holes.off",        "nefertiti.off", "pig.off",
+                           "cylinder.off"}) {
     SCOPED_TRACE(name);
     expect_same_as_reference(reeb_input(load_mesh(dir / name).components[0]));
   }

@@ -139,8 +139,7 @@ ReebGraph reference_reeb_graph(const Mesh& mesh, const MeshGraph& graph, const s
     std::swap(old_lines, lines);
     old_node = std::move(node);
   }
-  if (visited != mesh.num_vertices())
-    throw InvalidArgument("reference_reeb_graph: the mesh graph is not connected");
+  if (visited != mesh.num_vertices()) throw InvalidArgument("reference_reeb_graph: the mesh graph is not connected");
   return recorder.finish(mesh, f);
 }
 
