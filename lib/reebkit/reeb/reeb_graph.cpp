@@ -34,19 +34,12 @@ namespace {
 
 /// The level lines of C(t), kept up to date as the propagation absorbs one
 /// vertex after the other. A line is a doubly-linked list of its vertices
-/// threaded through flat per-vertex arrays, with a line id per vertex; line
-/// ids are recycled.
+/// threaded through one flat array of per-vertex records, which also hold the
+/// vertex's line id; line ids are recycled.
 class IncrementalLevelLines {
  public:
   IncrementalLevelLines(const MeshGraph& graph, const std::vector<double>& f, DualGraphRecorder& recorder)
-      : graph_(graph),
-        f_(f),
-        recorder_(recorder),
-        state_(f.size(), VertexState::Unvisited),
-        line_of_(f.size(), kInvalidIndex),
-        next_(f.size(), kInvalidIndex),
-        prev_(f.size(), kInvalidIndex),
-        search_mark_(f.size(), -1) {}
+      : graph_(graph), f_(f), recorder_(recorder), vertex_(f.size()) {}
 
   /// Propagates from `minimum` over its whole connected component.
   void propagate_from(Index minimum) {
@@ -59,7 +52,7 @@ class IncrementalLevelLines {
     }
   }
 
-  bool visited(Index v) const { return state_[at(v)] == VertexState::Visited; }
+  bool visited(Index v) const { return vertex_[at(v)].state == VertexState::Visited; }
   Index visited_count() const { return visited_count_; }
 
  private:
@@ -82,25 +75,25 @@ class IncrementalLevelLines {
   }
 
   void link(Index line, Index v) {
-    line_of_[at(v)] = line;
-    prev_[at(v)] = kInvalidIndex;
-    next_[at(v)] = head_[at(line)];
-    if (head_[at(line)] != kInvalidIndex) prev_[at(head_[at(line)])] = v;
+    vertex_[at(v)].line = line;
+    vertex_[at(v)].prev = kInvalidIndex;
+    vertex_[at(v)].next = head_[at(line)];
+    if (head_[at(line)] != kInvalidIndex) vertex_[at(head_[at(line)])].prev = v;
     head_[at(line)] = v;
     ++size_[at(line)];
   }
 
   void unlink(Index line, Index v) {
-    const Index p = prev_[at(v)];
-    const Index n = next_[at(v)];
-    (p == kInvalidIndex ? head_[at(line)] : next_[at(p)]) = n;
-    if (n != kInvalidIndex) prev_[at(n)] = p;
+    const Index p = vertex_[at(v)].prev;
+    const Index n = vertex_[at(v)].next;
+    (p == kInvalidIndex ? head_[at(line)] : vertex_[at(p)].next) = n;
+    if (n != kInvalidIndex) vertex_[at(n)].prev = p;
     --size_[at(line)];
   }
 
   /// v joins C(t) in `line`.
   void enter(Index v, Index line) {
-    state_[at(v)] = VertexState::Candidate;
+    vertex_[at(v)].state = VertexState::Candidate;
     link(line, v);
     queue_.emplace(f_[at(v)], v);
   }
@@ -109,12 +102,12 @@ class IncrementalLevelLines {
   Index merge(Index a, Index b) {
     if (size_[at(a)] < size_[at(b)]) std::swap(a, b);
     Index tail = kInvalidIndex;
-    for (Index u = head_[at(b)]; u != kInvalidIndex; u = next_[at(u)]) {
-      line_of_[at(u)] = a;
+    for (Index u = head_[at(b)]; u != kInvalidIndex; u = vertex_[at(u)].next) {
+      vertex_[at(u)].line = a;
       tail = u;
     }
-    next_[at(tail)] = head_[at(a)];
-    prev_[at(head_[at(a)])] = tail;
+    vertex_[at(tail)].next = head_[at(a)];
+    vertex_[at(head_[at(a)])].prev = tail;
     head_[at(a)] = head_[at(b)];
     size_[at(a)] += size_[at(b)];
     head_[at(b)] = kInvalidIndex;
@@ -125,11 +118,11 @@ class IncrementalLevelLines {
 
   /// Step t: v_t leaves C, its unvisited neighbours enter it.
   void absorb(Index v) {
-    Index line = line_of_[at(v)];
+    Index line = vertex_[at(v)].line;
     const Index node = node_[at(line)];
     recorder_.absorb(v, node);
     unlink(line, v);
-    state_[at(v)] = VertexState::Visited;
+    vertex_[at(v)].state = VertexState::Visited;
     ++visited_count_;
     change_.clear();
     change_.old_nodes.push_back(node);
@@ -142,17 +135,17 @@ class IncrementalLevelLines {
     const Index end = graph_.offset[at(v) + 1];
     for (Index i = begin; i < end; ++i) {
       const Index w = graph_.neighbor[at(i)];
-      if (state_[at(w)] != VertexState::Unvisited) continue;
+      if (vertex_[at(w)].state != VertexState::Unvisited) continue;
       enter(w, line);
       entered_.push_back(w);
     }
     for (const Index w : entered_) {
       for (Index i = graph_.offset[at(w)]; i < graph_.offset[at(w) + 1]; ++i) {
         const Index u = graph_.neighbor[at(i)];
-        if (state_[at(u)] != VertexState::Candidate || line_of_[at(u)] == line) continue;
-        change_.old_nodes.push_back(node_[at(line_of_[at(u)])]);
+        if (vertex_[at(u)].state != VertexState::Candidate || vertex_[at(u)].line == line) continue;
+        change_.old_nodes.push_back(node_[at(vertex_[at(u)].line)]);
         merged_from_.push_back(u);
-        line = merge(line, line_of_[at(u)]);
+        line = merge(line, vertex_[at(u)].line);
         node_[at(line)] = node;
       }
     }
@@ -163,8 +156,8 @@ class IncrementalLevelLines {
     new_lines_.clear();
     for (Index i = begin; i < end; ++i) {
       const Index w = graph_.neighbor[at(i)];
-      if (state_[at(w)] != VertexState::Candidate) continue;
-      const Index l = line_of_[at(w)];
+      if (vertex_[at(w)].state != VertexState::Candidate) continue;
+      const Index l = vertex_[at(w)].line;
       if (slot_[at(l)] != kInvalidIndex) continue;
       slot_[at(l)] = static_cast<Index>(new_lines_.size());
       change_.links.push_back({0, slot_[at(l)]});
@@ -172,7 +165,7 @@ class IncrementalLevelLines {
     }
     change_.new_lines = static_cast<Index>(new_lines_.size());
     for (std::size_t k = 0; k < merged_from_.size(); ++k)
-      change_.links.push_back({static_cast<Index>(k + 1), slot_[at(line_of_[at(merged_from_[k])])]});
+      change_.links.push_back({static_cast<Index>(k + 1), slot_[at(vertex_[at(merged_from_[k])].line)]});
     recorder_.step(v, change_, new_nodes_);
     for (std::size_t k = 0; k < new_lines_.size(); ++k) {
       node_[at(new_lines_[k])] = new_nodes_[k];
@@ -192,7 +185,7 @@ class IncrementalLevelLines {
     seeds_.clear();
     const Index begin = graph_.offset[at(v)];
     const Index end = graph_.offset[at(v) + 1];
-    const auto candidate = [&](Index i) { return state_[at(graph_.neighbor[at(i)])] == VertexState::Candidate; };
+    const auto candidate = [&](Index i) { return vertex_[at(graph_.neighbor[at(i)])].state == VertexState::Candidate; };
     bool any = false;
     for (Index i = begin; i < end; ++i) {
       if (!candidate(i)) continue;
@@ -212,7 +205,7 @@ class IncrementalLevelLines {
     group_.resize(k);
     for (std::size_t s = 0; s < k; ++s) {
       queues_[s].assign(1, seeds_[s]);
-      search_mark_[at(seeds_[s])] = base + static_cast<Index>(s);
+      vertex_[at(seeds_[s])].search = base + static_cast<Index>(s);
       group_[s] = s;
     }
     const auto find = [this](std::size_t s) {
@@ -226,10 +219,10 @@ class IncrementalLevelLines {
         const Index u = queues_[s][heads_[s]++];
         for (Index i = graph_.offset[at(u)]; i < graph_.offset[at(u) + 1]; ++i) {
           const Index w = graph_.neighbor[at(i)];
-          if (state_[at(w)] != VertexState::Candidate) continue;
-          const Index mark = search_mark_[at(w)];
+          if (vertex_[at(w)].state != VertexState::Candidate) continue;
+          const Index mark = vertex_[at(w)].search;
           if (mark < base) {
-            search_mark_[at(w)] = base + static_cast<Index>(s);
+            vertex_[at(w)].search = base + static_cast<Index>(s);
             queues_[s].push_back(w);
           } else {
             group_[find(static_cast<std::size_t>(mark - base))] = find(s);
@@ -277,12 +270,15 @@ class IncrementalLevelLines {
   DualGraphRecorder& recorder_;
   CandidateQueue queue_;
   Index visited_count_ = 0;
-  // Per vertex.
-  std::vector<VertexState> state_;
-  std::vector<Index> line_of_;
-  std::vector<Index> next_;
-  std::vector<Index> prev_;
-  std::vector<Index> search_mark_;  // id of the split search that reached the vertex
+  // Per vertex, together as they are used together.
+  struct Vertex {
+    VertexState state = VertexState::Unvisited;
+    Index line = kInvalidIndex;  // of a candidate
+    Index next = kInvalidIndex;  // the line's vertex list
+    Index prev = kInvalidIndex;
+    Index search = -1;  // id of the last split search that reached the vertex
+  };
+  std::vector<Vertex> vertex_;
   // Per line id.
   std::vector<Index> head_;
   std::vector<Index> size_;
