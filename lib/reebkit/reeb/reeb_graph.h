@@ -26,14 +26,18 @@ enum class NodeType : std::uint8_t {
 };
 
 /// One region of the segmentation: the vertices absorbed by one level line
-/// between two events.
+/// between two events. The vertex v_t of an event belongs to the region that
+/// ends there. A line may merge into a junction before any vertex of it was
+/// absorbed; its node then has no vertices: vertex_count = 0, area = 0, and
+/// the f range and barycenter of birth_vertex.
 struct ReebNode {
   /// How the region starts: Root, or the Bifurcation / Junction whose new
   /// line it is. A line born at a step that both split and merged lines is a
   /// Junction when several old lines flow into it, else a Bifurcation.
   NodeType type = NodeType::Root;
-  /// How the region ends: Bifurcation (its line split), Junction (its line
-  /// merged with others) or Termination.
+  /// How the region ends: Bifurcation (its line split, or fed several new
+  /// lines at a step that also merged lines), Junction (its line merged with
+  /// others into one) or Termination.
   NodeType end = NodeType::Termination;
   /// v_t of the step that created the node (the global minimum for the root).
   Index birth_vertex = kInvalidIndex;
@@ -46,14 +50,13 @@ struct ReebNode {
   /// Area-weighted Euclidean barycenter of the region's vertices, where the
   /// node is immersed (section 5.2).
   Vec3 barycenter = Vec3::Zero();
-  // A line may merge into a junction before any vertex of it was absorbed;
-  // its node then has no vertices: vertex_count = 0, area = 0, f range and
-  // barycenter those of birth_vertex.
 };
 
 /// The dual Reeb graph and the segmentation it induces.
 struct ReebGraph {
   /// Nodes in creation order (node 0 is the root); a node's id is its index.
+  /// The new lines of one step get their nodes in the order of their first
+  /// vertex in v_t's one-ring (MeshGraph order).
   std::vector<ReebNode> nodes;
   /// (earlier node, later node): the region of the first hands over to the
   /// second at the event ending the first. Sorted, no duplicates.
