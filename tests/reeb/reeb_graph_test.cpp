@@ -44,6 +44,7 @@ TEST(ReebGraph, CyclesAreEdgesMinusNodesPlusComponents) {
 void expect_same_as_reference(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f) {
   const ReebGraph fast = build_reeb_graph(mesh, graph, f);
   const ReebGraph reference = reference_reeb_graph(mesh, graph, f);
+  expect_consistent(fast, mesh, f);
   ASSERT_EQ(fast.num_nodes(), reference.num_nodes())
       << "fast " << summary(fast) << "; reference " << summary(reference);
   for (std::size_t n = 0; n < fast.nodes.size(); ++n) {

@@ -7,6 +7,8 @@
 #include "reebkit/mesh/mesh_graph.h"
 #include "reebkit/reeb/reeb_graph.h"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <sstream>
 #include <string>
@@ -42,6 +44,34 @@ inline Mesh disjoint_union(const Mesh& a, const Mesh& b) {
   m.triangles.resize(a.num_triangles() + b.num_triangles(), 3);
   m.triangles << a.triangles, b.triangles.array() + a.num_vertices();
   return m;
+}
+
+/// Every vertex labeled, node counts and f ranges consistent with the labels,
+/// nodes without vertices placed at their birth vertex, the root the region of
+/// the global minimum, edges from earlier to later nodes, one component.
+inline void expect_consistent(const ReebGraph& g, const Mesh& mesh, const std::vector<double>& f) {
+  ASSERT_EQ(g.vertex_node.size(), f.size());
+  std::vector<Index> count(g.nodes.size(), 0);
+  for (std::size_t v = 0; v < f.size(); ++v) {
+    const Index node = g.vertex_node[v];
+    ASSERT_TRUE(node >= 0 && node < g.num_nodes()) << "vertex " << v;
+    ++count[static_cast<std::size_t>(node)];
+    EXPECT_GE(f[v], g.nodes[static_cast<std::size_t>(node)].fq_min);
+    EXPECT_LE(f[v], g.nodes[static_cast<std::size_t>(node)].fq_max);
+  }
+  for (std::size_t n = 0; n < g.nodes.size(); ++n) {
+    const ReebNode& node = g.nodes[n];
+    EXPECT_EQ(count[n], node.vertex_count) << "node " << n;
+    if (node.vertex_count > 0) continue;
+    EXPECT_EQ(node.area, 0.0);
+    EXPECT_EQ(node.fq_min, f[static_cast<std::size_t>(node.birth_vertex)]);
+    EXPECT_EQ(node.barycenter, Vec3(mesh.vertices.row(node.birth_vertex)));
+  }
+  EXPECT_EQ(count_nodes(g, &ReebNode::type, NodeType::Root), 1);
+  EXPECT_EQ(g.nodes[0].type, NodeType::Root);
+  EXPECT_EQ(g.nodes[0].fq_min, *std::min_element(f.begin(), f.end()));
+  for (const auto& [a, b] : g.edges) EXPECT_LT(a, b);
+  EXPECT_EQ(g.connected_components(), 1);
 }
 
 /// "N nodes, E edges, C cycles, L leaves" for failure messages.
