@@ -3,13 +3,12 @@
 #include "reeb/cli.h"
 #include "reebkit/core/error.h"
 #include "reebkit/core/timer.h"
-#include "reebkit/features/feature_points.h"
-#include "reebkit/features/quotient_function.h"
 #include "reebkit/geodesic/dijkstra.h"
 #include "reebkit/io/ply.h"
 #include "reebkit/mesh/load_mesh.h"
 #include "reebkit/output/colormap.h"
 #include "reebkit/output/json_writer.h"
+#include "reebkit/pipeline/analyze_mesh.h"
 
 #include <fstream>
 #include <iomanip>
@@ -19,27 +18,7 @@ namespace reebkit::cli {
 
 namespace {
 
-struct ComponentResult {
-  Mesh mesh;
-  FeaturePoints features;
-  QuotientFunction fq;
-  double graph_ms = 0, features_ms = 0, fq_ms = 0;
-};
-
-ComponentResult analyze(Mesh mesh, const FeatureOptions& options) {
-  ComponentResult r;
-  Timer timer;
-  const MeshGraph graph = build_mesh_graph(mesh);
-  r.graph_ms = timer.lap();
-  r.features = extract_feature_points(graph, options);
-  r.features_ms = timer.lap();
-  r.fq = quotient_function(graph, r.features.vertices);
-  r.fq_ms = timer.lap();
-  r.mesh = std::move(mesh);
-  return r;
-}
-
-void print(const ComponentResult& r, std::size_t index, std::size_t count) {
+void print(const MeshAnalysis& r, std::size_t index, std::size_t count) {
   std::cout << (count > 1 ? "component " + std::to_string(index) + ": " : std::string()) << r.mesh.num_vertices()
             << " vertices, " << r.mesh.num_triangles() << " triangles, geodesic diameter " << r.features.diameter
             << "\n"
@@ -47,19 +26,19 @@ void print(const ComponentResult& r, std::size_t index, std::size_t count) {
   for (const Index v : r.features.vertices)
     std::cout << "  " << std::setw(8) << r.mesh.source_index(v) << "  (" << r.mesh.vertices(v, 0) << ", "
               << r.mesh.vertices(v, 1) << ", " << r.mesh.vertices(v, 2) << ")\n";
-  std::cout << std::fixed << std::setprecision(2) << "time: graph " << r.graph_ms << " ms, features "
-            << r.features_ms << " ms, f_q " << r.fq_ms << " ms\n"
+  std::cout << std::fixed << std::setprecision(2) << "time: graph " << r.timings.graph << " ms, features "
+            << r.timings.features << " ms, f_q " << r.timings.quotient << " ms\n"
             << std::defaultfloat << std::setprecision(6);
 }
 
 void write_json(const std::string& path, const std::string& mesh_path, const FeatureOptions& options,
-                const std::vector<ComponentResult>& results, double load_ms) {
+                const std::vector<MeshAnalysis>& results, double load_ms) {
   std::ofstream out(path);
   if (!out) throw Error(path + ": cannot open for writing");
   JsonWriter json(out);
   json.begin_object().field("mesh", mesh_path).field("epsilon", options.epsilon).field("load_ms", load_ms);
   json.key("components").begin_array();
-  for (const ComponentResult& r : results) {
+  for (const MeshAnalysis& r : results) {
     json.begin_object()
         .field("vertices", static_cast<long long>(r.mesh.num_vertices()))
         .field("triangles", static_cast<long long>(r.mesh.num_triangles()))
@@ -75,9 +54,9 @@ void write_json(const std::string& path, const std::string& mesh_path, const Fea
     json.end_array();
     json.key("timings_ms")
         .begin_object()
-        .field("graph", r.graph_ms)
-        .field("features", r.features_ms)
-        .field("quotient", r.fq_ms)
+        .field("graph", r.timings.graph)
+        .field("features", r.timings.features)
+        .field("quotient", r.timings.quotient)
         .end_object();
     json.end_object();
   }
@@ -87,12 +66,11 @@ void write_json(const std::string& path, const std::string& mesh_path, const Fea
 
 // f_q as viridis colors; the geodesic disc of radius 1.5% of the diameter
 // around each feature point painted red so that the points are visible.
-void write_fq_ply(const std::string& path, const ComponentResult& r) {
+void write_fq_ply(const std::string& path, const MeshAnalysis& r) {
   PlyVertexData data;
   data.colors = colorize(r.fq.value, 0.0, 1.0);
   std::vector<double> marker(r.fq.value.size(), 0.0);
-  const MeshGraph graph = build_mesh_graph(r.mesh);
-  const DistanceField near = dijkstra(graph, r.features.vertices, DijkstraOptions{0.015 * r.features.diameter});
+  const DistanceField near = dijkstra(r.graph, r.features.vertices, DijkstraOptions{0.015 * r.features.diameter});
   for (Index v = 0; v < r.mesh.num_vertices(); ++v) {
     if (near.nearest_source[v] == kInvalidIndex) continue;
     data.colors.row(v) << 0.85, 0.1, 0.1;
@@ -108,7 +86,9 @@ void write_fq_ply(const std::string& path, const ComponentResult& r) {
 int run_features(const std::vector<std::string>& args) {
   po::options_description options("options");
   std::string mesh_path, json_path, ply_path;
-  FeatureOptions feature_options;
+  AnalysisOptions analysis;
+  analysis.reeb_graph = false;
+  FeatureOptions& feature_options = analysis.features;
   bool all_components = false;
   options.add_options()
       ("mesh", po::value(&mesh_path)->required(), "mesh file (.off .obj .ply .stl)")
@@ -134,9 +114,9 @@ int run_features(const std::vector<std::string>& args) {
   std::cout << mesh_path << ": read and cleaned in " << std::fixed << std::setprecision(2) << load_ms << " ms\n"
             << std::defaultfloat;
 
-  std::vector<ComponentResult> results;
+  std::vector<MeshAnalysis> results;
   for (std::size_t c = 0; c < cleaned.components.size(); ++c) {
-    results.push_back(analyze(std::move(cleaned.components[c]), feature_options));
+    results.push_back(analyze_mesh(std::move(cleaned.components[c]), analysis));
     print(results.back(), c, cleaned.components.size());
   }
   if (!json_path.empty()) {

@@ -1,0 +1,24 @@
+#include "reebkit/pipeline/analyze_mesh.h"
+
+#include "reebkit/core/timer.h"
+
+namespace reebkit {
+
+MeshAnalysis analyze_mesh(Mesh mesh, const AnalysisOptions& options) {
+  MeshAnalysis a;
+  a.mesh = std::move(mesh);
+  Timer timer;
+  a.graph = build_mesh_graph(a.mesh);
+  a.timings.graph = timer.lap();
+  a.features = extract_feature_points(a.graph, options.features);
+  a.timings.features = timer.lap();
+  a.fq = quotient_function(a.graph, a.features.vertices);
+  a.timings.quotient = timer.lap();
+  if (options.reeb_graph) {
+    a.reeb = build_reeb_graph(a.mesh, a.graph, a.fq.value, options.reeb);
+    a.timings.reeb = timer.lap();
+  }
+  return a;
+}
+
+}  // namespace reebkit

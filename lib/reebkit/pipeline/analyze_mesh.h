@@ -1,0 +1,42 @@
+// The per-mesh pipeline of reebkit in one call: mesh graph -> feature points
+// -> quotient function f_q -> high-level Reeb graph, with the time of each step.
+// Tools and experiments compose this; each step stays callable on its own.
+#pragma once
+
+#include "reebkit/features/feature_points.h"
+#include "reebkit/features/quotient_function.h"
+#include "reebkit/mesh/mesh_graph.h"
+#include "reebkit/reeb/reeb_graph.h"
+
+namespace reebkit {
+
+struct AnalysisOptions {
+  FeatureOptions features;  ///< feature point extraction (epsilon, start vertex, ...)
+  ReebOptions reeb;         ///< Reeb graph construction
+  bool reeb_graph = true;   ///< false: stop after f_q (no Reeb graph)
+};
+
+/// Wall-clock milliseconds of each step (file reading excluded).
+struct AnalysisTimings {
+  double graph = 0;     ///< build_mesh_graph
+  double features = 0;  ///< extract_feature_points
+  double quotient = 0;  ///< quotient_function
+  double reeb = 0;      ///< build_reeb_graph (0 when not built)
+  double total() const { return graph + features + quotient + reeb; }
+};
+
+/// Everything computed for one mesh.
+struct MeshAnalysis {
+  Mesh mesh;
+  MeshGraph graph;
+  FeaturePoints features;
+  QuotientFunction fq;
+  ReebGraph reeb;  ///< empty when options.reeb_graph is false
+  AnalysisTimings timings;
+};
+
+/// Runs the pipeline on a cleaned, connected mesh (see load_mesh).
+/// Throws InvalidArgument when the mesh graph is not connected.
+MeshAnalysis analyze_mesh(Mesh mesh, const AnalysisOptions& options = {});
+
+}  // namespace reebkit
