@@ -4,6 +4,7 @@
 #include "reebkit/core/error.h"
 #include "reebkit/mesh/load_mesh.h"
 #include "reebkit/mesh/shapes.h"
+#include "reebkit/mesh/transform.h"
 #include "reebkit/reeb/reeb_reference.h"
 #include "support/test_support.h"
 
@@ -40,10 +41,12 @@ TEST(ReebGraph, CyclesAreEdgesMinusNodesPlusComponents) {
 }
 
 /// build_reeb_graph equals reference_reeb_graph exactly: same nodes (in the
-/// same order, with the same attributes), edges and segmentation.
-void expect_same_as_reference(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f) {
-  const ReebGraph fast = build_reeb_graph(mesh, graph, f);
-  const ReebGraph reference = reference_reeb_graph(mesh, graph, f);
+/// same order, with the same attributes), edges and segmentation; the same
+/// skeleton points up to the rounding of the fast builder's running sums.
+void expect_same_as_reference(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f,
+                              const ReebOptions& options = {}) {
+  const ReebGraph fast = build_reeb_graph(mesh, graph, f, options);
+  const ReebGraph reference = reference_reeb_graph(mesh, graph, f, options);
   expect_consistent(fast, mesh, f);
   ASSERT_EQ(fast.num_nodes(), reference.num_nodes())
       << "fast " << summary(fast) << "; reference " << summary(reference);
@@ -54,6 +57,10 @@ void expect_same_as_reference(const Mesh& mesh, const MeshGraph& graph, const st
                 a.fq_max == b.fq_max && a.vertex_count == b.vertex_count && a.area == b.area &&
                 a.barycenter == b.barycenter)
         << "node " << n;
+    ASSERT_EQ(a.skeleton.size(), b.skeleton.size()) << "node " << n;
+    const double tolerance = 1e-9 * (mesh.vertices.colwise().maxCoeff() - mesh.vertices.colwise().minCoeff()).norm();
+    for (std::size_t k = 0; k < a.skeleton.size(); ++k)
+      EXPECT_LE((a.skeleton[k] - b.skeleton[k]).norm(), tolerance) << "node " << n << " point " << k;
   }
   EXPECT_EQ(fast.edges, reference.edges);
   EXPECT_EQ(fast.vertex_node, reference.vertex_node);
@@ -100,6 +107,16 @@ TEST(BuildReebGraph, EqualsReferenceOnToriAndSpheres) {
   for (const int levels : {0, 1, 2, 3, 4}) {
     SCOPED_TRACE(std::to_string(levels) + " levels sphere");
     expect_same_as_reference(reeb_input(make_icosphere(levels)));
+  }
+}
+
+TEST(BuildReebGraph, EqualsReferenceForEverySkeletonThinning) {
+  const ReebInput in = reeb_input(make_star(StarOptions{5, 3}));
+  for (const Index levels : {1, 2, 7, 1000}) {
+    SCOPED_TRACE(std::to_string(levels) + " skeleton levels");
+    ReebOptions options;
+    options.skeleton_levels = levels;
+    expect_same_as_reference(in.mesh, in.graph, in.fq, options);
   }
 }
 
@@ -189,10 +206,105 @@ TEST(BuildReebGraph, EqualsReferenceOnCgalMeshes) {
   }
 }
 
+// Each arm of a star is a leaf swept from the body to the tip by level lines
+// that circle the arm: its skeleton (section 5.2, figure 10a) stays inside
+// the arm's cone, near its axis, and moves outward from the base to the tip,
+// where it ends at the arm's feature point. Around the tip the lines circle
+// that vertex, which is up to a mesh edge off the axis: there the points may
+// move back along the axis by up to the longest edge at the tip.
+TEST(Skeleton, RunsAlongTheAxisOfEachStarArm) {
+  StarOptions options;
+  options.arms = 6;
+  options.levels = 5;
+  const std::vector<Vec3> axes = star_arm_directions(options);
+  const Mesh mesh = make_star(options);
+  const MeshGraph graph = build_mesh_graph(mesh);
+  const std::vector<Index> features = extract_feature_points(graph).vertices;
+  const ReebGraph g = build_reeb_graph(mesh, graph, quotient_function(graph, features).value);
+  ASSERT_EQ(count_nodes(g, &ReebNode::end, NodeType::Termination), options.arms) << summary(g);
+  std::vector<int> arm_seen(axes.size(), 0);
+  for (const ReebNode& node : g.nodes) {
+    if (node.end != NodeType::Termination) continue;
+    const std::vector<Vec3>& points = node.skeleton;
+    ASSERT_GE(points.size(), 10u);
+    const auto tip = std::find_if(features.begin(), features.end(), [&](Index v) {
+      return (Vec3(mesh.vertices.row(v)) - points.back()).norm() < 1e-12;
+    });
+    ASSERT_NE(tip, features.end()) << "the leaf does not end at a feature point";
+    const auto tip_edges = graph.length.begin() + graph.offset[*tip];
+    const double slack = *std::max_element(tip_edges, tip_edges + graph.degree(*tip));
+    std::size_t arm = 0;
+    for (std::size_t a = 1; a < axes.size(); ++a)
+      if (points.back().dot(axes[a]) > points.back().dot(axes[arm])) arm = a;
+    ++arm_seen[arm];
+    const Vec3& axis = axes[arm];
+    SCOPED_TRACE("arm " + std::to_string(arm));
+    EXPECT_LT(points.front().dot(axis), 1.5) << "born away from the arm's base";
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      const Vec3& p = points[k];
+      const double along = p.dot(axis);
+      EXPECT_LE(std::acos(std::min(1.0, along / p.norm())), options.arm_width) << "point " << k << " outside the arm";
+      if (k + 1 == points.size()) break;  // the tip vertex
+      // Within half the arm's radius where it leaves the unit sphere.
+      EXPECT_LT((p - along * axis).norm(), 0.5 * std::sin(options.arm_width)) << "point " << k;
+      if (k > 0) {
+        EXPECT_GT(along, points[k - 1].dot(axis) - (along > 1.0 + options.arm_length - slack ? slack : 0.0))
+            << "point " << k << " moves back";
+      }
+    }
+  }
+  EXPECT_EQ(arm_seen, std::vector<int>(axes.size(), 1));
+}
+
+// At most the node's birth, a point per level of f it enters, and its end.
+TEST(Skeleton, ThinnedToOnePointPerLevelOfF) {
+  const ReebInput in = reeb_input(make_torus(40, 14));
+  const auto [lo, hi] = std::minmax_element(in.fq.begin(), in.fq.end());
+  for (const Index levels : {1, 10, 100}) {
+    ReebOptions options;
+    options.skeleton_levels = levels;
+    const ReebGraph g = build_reeb_graph(in.mesh, in.graph, in.fq, options);
+    const auto level = [&](double x) { return std::min(static_cast<Index>((x - *lo) / (*hi - *lo) * levels), levels - 1); };
+    for (std::size_t n = 0; n < g.nodes.size(); ++n) {
+      const ReebNode& node = g.nodes[n];
+      const Index span = level(node.fq_max) - level(in.fq[static_cast<std::size_t>(node.birth_vertex)]);
+      EXPECT_LE(node.skeleton.size(), static_cast<std::size_t>(std::max(span, 0) + 2)) << levels << " levels, node " << n;
+    }
+  }
+}
+
+// The graph depends on f and the connectivity only: with the same f on a
+// moved copy of the mesh, the skeleton moves with the mesh.
+TEST(Skeleton, MovesWithTheMesh) {
+  StarOptions options;
+  options.arms = 4;
+  options.levels = 4;
+  const ReebInput in = reeb_input(make_star(options));
+  Similarity t;
+  t.rotation = random_rotation(3);
+  t.scale = 0.04;
+  t.translation = Vec3(10, 20, -5);
+  const Mesh moved = transformed(in.mesh, t);
+  const ReebGraph g = build_reeb_graph(in.mesh, in.graph, in.fq);
+  const ReebGraph h = build_reeb_graph(moved, build_mesh_graph(moved), in.fq);
+  ASSERT_EQ(h.num_nodes(), g.num_nodes());
+  for (std::size_t n = 0; n < g.nodes.size(); ++n) {
+    ASSERT_EQ(h.nodes[n].skeleton.size(), g.nodes[n].skeleton.size()) << "node " << n;
+    for (std::size_t k = 0; k < g.nodes[n].skeleton.size(); ++k) {
+      const Vec3 expected = t.scale * t.rotation * g.nodes[n].skeleton[k] + t.translation;
+      EXPECT_LT((h.nodes[n].skeleton[k] - expected).norm(), 1e-9 * 25.0) << "node " << n << " point " << k;
+    }
+  }
+}
+
 TEST(BuildReebGraph, RejectsMismatchedInputs) {
   const ReebInput in = reeb_input(make_icosphere(1));
   EXPECT_THROW(build_reeb_graph(in.mesh, in.graph, {1.0, 2.0}), InvalidArgument);
   EXPECT_THROW(build_reeb_graph(Mesh{}, MeshGraph{}, {}), InvalidArgument);
+  ReebOptions options;
+  options.skeleton_levels = 0;
+  EXPECT_THROW(build_reeb_graph(in.mesh, in.graph, in.fq, options), InvalidArgument);
+  EXPECT_THROW(reference_reeb_graph(in.mesh, in.graph, in.fq, options), InvalidArgument);
 }
 
 }  // namespace

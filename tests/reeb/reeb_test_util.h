@@ -7,6 +7,7 @@
 #include "reebkit/mesh/mesh_graph.h"
 #include "reebkit/reeb/reeb_graph.h"
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -46,9 +47,38 @@ inline Mesh disjoint_union(const Mesh& a, const Mesh& b) {
   return m;
 }
 
+/// The skeleton of each node lies in the bounding box of the vertices its
+/// level line goes on to absorb: those of the node and of the nodes after it
+/// (edges run from earlier to later nodes). The root's starts at the global
+/// minimum; a leaf's ends at one of its own vertices, where its line vanished.
+inline void expect_skeleton_in_place(const ReebGraph& g, const Mesh& mesh, const std::vector<double>& f) {
+  const double tolerance = 1e-9 * (mesh.vertices.colwise().maxCoeff() - mesh.vertices.colwise().minCoeff()).norm();
+  const Eigen::AlignedBox3d empty;
+  std::vector<Eigen::AlignedBox3d> box(g.nodes.size(), empty);
+  for (Index v = 0; v < mesh.num_vertices(); ++v)
+    box[static_cast<std::size_t>(g.vertex_node[static_cast<std::size_t>(v)])].extend(Vec3(mesh.vertices.row(v)));
+  for (auto e = g.edges.rbegin(); e != g.edges.rend(); ++e)
+    box[static_cast<std::size_t>((*e)[0])].extend(box[static_cast<std::size_t>((*e)[1])]);
+  for (std::size_t n = 0; n < g.nodes.size(); ++n) {
+    const std::vector<Vec3>& skeleton = g.nodes[n].skeleton;
+    ASSERT_FALSE(skeleton.empty()) << "node " << n;
+    for (const Vec3& p : skeleton)
+      EXPECT_LE(box[n].exteriorDistance(p), tolerance) << "node " << n << " point " << p.transpose();
+    if (g.nodes[n].end != NodeType::Termination) continue;
+    bool at_own_vertex = false;
+    for (Index v = 0; v < mesh.num_vertices(); ++v)
+      at_own_vertex |= g.vertex_node[static_cast<std::size_t>(v)] == static_cast<Index>(n) &&
+                       (Vec3(mesh.vertices.row(v)) - skeleton.back()).norm() <= tolerance;
+    EXPECT_TRUE(at_own_vertex) << "leaf " << n;
+  }
+  const auto minimum = std::min_element(f.begin(), f.end()) - f.begin();
+  EXPECT_EQ(g.nodes[0].skeleton.front(), Vec3(mesh.vertices.row(minimum)));
+}
+
 /// Every vertex labeled, node counts and f ranges consistent with the labels,
 /// nodes without vertices placed at their birth vertex, the root the region of
-/// the global minimum, edges from earlier to later nodes, one component.
+/// the global minimum, edges from earlier to later nodes, one component, the
+/// skeleton in place.
 inline void expect_consistent(const ReebGraph& g, const Mesh& mesh, const std::vector<double>& f) {
   ASSERT_EQ(g.vertex_node.size(), f.size());
   std::vector<Index> count(g.nodes.size(), 0);
@@ -72,6 +102,7 @@ inline void expect_consistent(const ReebGraph& g, const Mesh& mesh, const std::v
   EXPECT_EQ(g.nodes[0].fq_min, *std::min_element(f.begin(), f.end()));
   for (const auto& [a, b] : g.edges) EXPECT_LT(a, b);
   EXPECT_EQ(g.connected_components(), 1);
+  expect_skeleton_in_place(g, mesh, f);
 }
 
 /// "N nodes, E edges, C cycles, L leaves" for failure messages.

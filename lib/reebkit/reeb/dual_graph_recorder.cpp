@@ -9,8 +9,12 @@
 
 namespace reebkit {
 
-void check_reeb_inputs(const char* who, const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f) {
+void check_reeb_inputs(const char* who, const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f,
+                       const ReebOptions& options) {
   const std::string name(who);
+  if (options.skeleton_levels < 1)
+    throw InvalidArgument(name + ": skeleton_levels is " + std::to_string(options.skeleton_levels) +
+                          ", must be at least 1");
   if (mesh.num_vertices() == 0) throw InvalidArgument(name + ": empty mesh");
   if (graph.num_vertices() != mesh.num_vertices())
     throw InvalidArgument(name + ": the mesh graph has " + std::to_string(graph.num_vertices()) +
@@ -29,8 +33,12 @@ Index global_minimum(const std::vector<double>& f) {
   return best;
 }
 
-DualGraphRecorder::DualGraphRecorder(Index num_vertices) {
-  graph_.vertex_node.assign(static_cast<std::size_t>(num_vertices), kInvalidIndex);
+DualGraphRecorder::DualGraphRecorder(const Mesh& mesh, const std::vector<double>& f, const ReebOptions& options)
+    : mesh_(mesh), f_(f), levels_(options.skeleton_levels) {
+  graph_.vertex_node.assign(f.size(), kInvalidIndex);
+  const auto [lo, hi] = std::minmax_element(f.begin(), f.end());
+  f_min_ = *lo;
+  if (*hi > *lo) level_scale_ = levels_ / (*hi - *lo);
 }
 
 Index DualGraphRecorder::add_node(NodeType type, Index birth_vertex) {
@@ -38,22 +46,52 @@ Index DualGraphRecorder::add_node(NodeType type, Index birth_vertex) {
   node.type = type;
   node.birth_vertex = birth_vertex;
   graph_.nodes.push_back(node);
+  last_level_.push_back(0);
+  line_shown_.push_back(0);
   return graph_.num_nodes() - 1;
 }
 
-Index DualGraphRecorder::start_root(Index minimum) { return add_node(NodeType::Root, minimum); }
+Index DualGraphRecorder::level_of(Index v) const {
+  const double t = (f_[static_cast<std::size_t>(v)] - f_min_) * level_scale_;
+  return std::min(static_cast<Index>(t), levels_ - 1);
+}
+
+void DualGraphRecorder::sample(Index node, const Vec3& center, Index level) {
+  const auto n = static_cast<std::size_t>(node);
+  graph_.nodes[n].skeleton.push_back(center);
+  last_level_[n] = level;
+  line_shown_[n] = 1;
+}
+
+Index DualGraphRecorder::start_root(Index minimum) {
+  const Index root = add_node(NodeType::Root, minimum);
+  sample(root, mesh_.vertices.row(minimum), level_of(minimum));
+  return root;
+}
 
 void DualGraphRecorder::step(Index v, const LineChange& change, std::vector<Index>& new_nodes) {
   new_nodes.clear();
+  const Index level = level_of(v);
   if (change.old_nodes.size() == 1 && change.new_lines == 1) {  // no event
-    new_nodes.push_back(change.old_nodes[0]);
+    const Index node = change.old_nodes[0];
+    new_nodes.push_back(node);
+    if (level > last_level_[static_cast<std::size_t>(node)])
+      sample(node, change.new_centers[0], level);
+    else
+      line_shown_[static_cast<std::size_t>(node)] = 0;
     return;
+  }
+  for (std::size_t k = 0; k < change.old_nodes.size(); ++k) {
+    const auto old = static_cast<std::size_t>(change.old_nodes[k]);
+    graph_.nodes[old].end = NodeType::Termination;
+    if (line_shown_[old] == 0) sample(change.old_nodes[k], change.old_centers[k], level);
   }
   parents_.assign(static_cast<std::size_t>(change.new_lines), 0);
   for (const auto& link : change.links) ++parents_[static_cast<std::size_t>(link[1])];
-  for (const Index parents : parents_)
-    new_nodes.push_back(add_node(parents > 1 ? NodeType::Junction : NodeType::Bifurcation, v));
-  for (const Index old : change.old_nodes) graph_.nodes[static_cast<std::size_t>(old)].end = NodeType::Termination;
+  for (std::size_t k = 0; k < parents_.size(); ++k) {
+    new_nodes.push_back(add_node(parents_[k] > 1 ? NodeType::Junction : NodeType::Bifurcation, v));
+    sample(new_nodes.back(), change.new_centers[k], level);
+  }
   for (const auto& [old, line] : change.links) {
     const Index from = change.old_nodes[static_cast<std::size_t>(old)];
     graph_.edges.push_back({from, new_nodes[static_cast<std::size_t>(line)]});
@@ -64,7 +102,9 @@ void DualGraphRecorder::step(Index v, const LineChange& change, std::vector<Inde
   }
 }
 
-ReebGraph DualGraphRecorder::finish(const Mesh& mesh, const std::vector<double>& f) {
+ReebGraph DualGraphRecorder::finish() {
+  const Mesh& mesh = mesh_;
+  const std::vector<double>& f = f_;
   // One third of each triangle's area to each of its corners (section 5.2).
   std::vector<double> vertex_area(static_cast<std::size_t>(mesh.num_vertices()), 0.0);
   for (Index t = 0; t < mesh.num_triangles(); ++t) {

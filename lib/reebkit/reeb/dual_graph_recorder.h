@@ -26,8 +26,10 @@ using CandidateQueue =
     std::priority_queue<std::pair<double, Index>, std::vector<std::pair<double, Index>>, std::greater<>>;
 
 /// Throws InvalidArgument (message starting with `who`) unless `mesh`,
-/// `graph` and `f` describe the same non-empty vertex set and f is finite.
-void check_reeb_inputs(const char* who, const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f);
+/// `graph` and `f` describe the same non-empty vertex set, f is finite and
+/// options.skeleton_levels >= 1.
+void check_reeb_inputs(const char* who, const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f,
+                       const ReebOptions& options);
 
 /// The vertex of smallest (f, id).
 Index global_minimum(const std::vector<double>& f);
@@ -44,20 +46,28 @@ struct LineChange {
   /// (index into old_nodes, index of a new line): the new line holds vertices
   /// of the old one, or (for old line 0) of v_t's neighbourhood.
   std::vector<std::array<Index, 2>> links;
+  /// Skeleton points: the barycenter (mean position) of each old line before
+  /// the step, in the order of old_nodes, and of each new line after it.
+  std::vector<Vec3> old_centers;
+  std::vector<Vec3> new_centers;
 
   void clear() {
     old_nodes.clear();
     new_lines = 0;
     links.clear();
+    old_centers.clear();
+    new_centers.clear();
   }
 };
 
-/// Records the dual Reeb graph while the level lines evolve.
+/// Records the dual Reeb graph and its skeleton while the level lines evolve.
 class DualGraphRecorder {
  public:
-  explicit DualGraphRecorder(Index num_vertices);
+  /// Keeps references to `mesh` and `f`, which must outlive the recorder.
+  DualGraphRecorder(const Mesh& mesh, const std::vector<double>& f, const ReebOptions& options);
 
-  /// Creates the root node of a propagation starting at `minimum`.
+  /// Creates the root node of a propagation starting at `minimum`, its
+  /// skeleton starting at the minimum.
   Index start_root(Index minimum);
 
   /// Labels v_t with the node of the line that absorbed it.
@@ -68,18 +78,33 @@ class DualGraphRecorder {
   /// keeps its node. No new line is a termination (eq. 11). Otherwise every
   /// old node ends and every new line starts a node linked from its old ones:
   /// a bifurcation (eq. 9) when one old line feeds it, a junction (eq. 10)
-  /// when several do.
+  /// when several do. Skeletons: an ending node gets its line's last
+  /// position, a new node starts at its line's, and a line that is no event
+  /// adds a point when f(v) enters a new level (ReebOptions::skeleton_levels).
   void step(Index v, const LineChange& change, std::vector<Index>& new_nodes);
 
   /// The finished graph: node attributes from the segmentation, edges sorted.
   /// \pre every vertex has been absorbed.
-  ReebGraph finish(const Mesh& mesh, const std::vector<double>& f);
+  ReebGraph finish();
 
  private:
   Index add_node(NodeType type, Index birth_vertex);
+  /// The level of f(v) among ReebOptions::skeleton_levels equal parts of the range of f.
+  Index level_of(Index v) const;
+  /// Appends a skeleton point to `node`: its line as it is now.
+  void sample(Index node, const Vec3& center, Index level);
 
+  const Mesh& mesh_;
+  const std::vector<double>& f_;
+  Index levels_;
+  double f_min_ = 0.0;
+  double level_scale_ = 0.0;  // levels per unit of f (0 when f is constant)
   ReebGraph graph_;
   std::vector<Index> parents_;  // per new line of the current step
+  // Per node: level of its last skeleton point, and whether that point still
+  // shows the line (it has not changed since).
+  std::vector<Index> last_level_;
+  std::vector<std::uint8_t> line_shown_;
 };
 
 }  // namespace reebkit

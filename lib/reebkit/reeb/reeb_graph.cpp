@@ -35,11 +35,19 @@ namespace {
 /// The level lines of C(t), kept up to date as the propagation absorbs one
 /// vertex after the other. A line is a doubly-linked list of its vertices
 /// threaded through one flat array of per-vertex records, which also hold the
-/// vertex's line id; line ids are recycled.
+/// vertex's line id; line ids are recycled. Each line also keeps the sum of
+/// its vertices' positions (relative to the center of the mesh's bounding
+/// box, to keep the sums small) for its skeleton point.
 class IncrementalLevelLines {
  public:
-  IncrementalLevelLines(const MeshGraph& graph, const std::vector<double>& f, DualGraphRecorder& recorder)
-      : graph_(graph), f_(f), recorder_(recorder), vertex_(f.size()) {}
+  IncrementalLevelLines(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f,
+                        DualGraphRecorder& recorder)
+      : mesh_(mesh),
+        graph_(graph),
+        f_(f),
+        recorder_(recorder),
+        origin_(0.5 * (mesh.vertices.colwise().minCoeff() + mesh.vertices.colwise().maxCoeff()).transpose()),
+        vertex_(f.size()) {}
 
   /// Propagates from `minimum` over its whole connected component.
   void propagate_from(Index minimum) {
@@ -64,15 +72,22 @@ class IncrementalLevelLines {
       line = static_cast<Index>(head_.size());
       head_.push_back(kInvalidIndex);
       size_.push_back(0);
+      sum_.push_back(Vec3::Zero());
       node_.push_back(node);
       slot_.push_back(kInvalidIndex);
     } else {
       line = free_lines_.back();
       free_lines_.pop_back();
+      sum_[at(line)].setZero();  // drop the rounding left by its previous vertices
       node_[at(line)] = node;
     }
     return line;
   }
+
+  Vec3 position(Index v) const { return mesh_.vertices.row(v).transpose() - origin_; }
+
+  /// The barycenter of the line's vertices.
+  Vec3 center(Index line) const { return origin_ + sum_[at(line)] / size_[at(line)]; }
 
   void link(Index line, Index v) {
     vertex_[at(v)].line = line;
@@ -81,6 +96,7 @@ class IncrementalLevelLines {
     if (head_[at(line)] != kInvalidIndex) vertex_[at(head_[at(line)])].prev = v;
     head_[at(line)] = v;
     ++size_[at(line)];
+    sum_[at(line)] += position(v);
   }
 
   void unlink(Index line, Index v) {
@@ -89,6 +105,7 @@ class IncrementalLevelLines {
     (p == kInvalidIndex ? head_[at(line)] : vertex_[at(p)].next) = n;
     if (n != kInvalidIndex) vertex_[at(n)].prev = p;
     --size_[at(line)];
+    sum_[at(line)] -= position(v);
   }
 
   /// v joins C(t) in `line`.
@@ -110,6 +127,7 @@ class IncrementalLevelLines {
     vertex_[at(head_[at(a)])].prev = tail;
     head_[at(a)] = head_[at(b)];
     size_[at(a)] += size_[at(b)];
+    sum_[at(a)] += sum_[at(b)];
     head_[at(b)] = kInvalidIndex;
     size_[at(b)] = 0;
     free_lines_.push_back(b);
@@ -121,11 +139,12 @@ class IncrementalLevelLines {
     Index line = vertex_[at(v)].line;
     const Index node = node_[at(line)];
     recorder_.absorb(v, node);
+    change_.clear();
+    change_.old_nodes.push_back(node);
+    change_.old_centers.push_back(center(line));
     unlink(line, v);
     vertex_[at(v)].state = VertexState::Visited;
     ++visited_count_;
-    change_.clear();
-    change_.old_nodes.push_back(node);
     merged_from_.clear();
 
     // The new candidates join v's line; every other line they touch merges
@@ -144,6 +163,7 @@ class IncrementalLevelLines {
         const Index u = graph_.neighbor[at(i)];
         if (vertex_[at(u)].state != VertexState::Candidate || vertex_[at(u)].line == line) continue;
         change_.old_nodes.push_back(node_[at(vertex_[at(u)].line)]);
+        change_.old_centers.push_back(center(vertex_[at(u)].line));
         merged_from_.push_back(u);
         line = merge(line, vertex_[at(u)].line);
         node_[at(line)] = node;
@@ -161,6 +181,7 @@ class IncrementalLevelLines {
       if (slot_[at(l)] != kInvalidIndex) continue;
       slot_[at(l)] = static_cast<Index>(new_lines_.size());
       change_.links.push_back({0, slot_[at(l)]});
+      change_.new_centers.push_back(center(l));
       new_lines_.push_back(l);
     }
     change_.new_lines = static_cast<Index>(new_lines_.size());
@@ -265,9 +286,11 @@ class IncrementalLevelLines {
     }
   }
 
+  const Mesh& mesh_;
   const MeshGraph& graph_;
   const std::vector<double>& f_;
   DualGraphRecorder& recorder_;
+  Vec3 origin_;
   CandidateQueue queue_;
   Index visited_count_ = 0;
   // Per vertex, together as they are used together.
@@ -282,6 +305,7 @@ class IncrementalLevelLines {
   // Per line id.
   std::vector<Index> head_;
   std::vector<Index> size_;
+  std::vector<Vec3> sum_;  // of position()
   std::vector<Index> node_;
   std::vector<Index> slot_;  // index among the new lines of the current step, else kInvalidIndex
   std::vector<Index> free_lines_;
@@ -304,9 +328,9 @@ class IncrementalLevelLines {
 
 ReebGraph build_reeb_graph(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f,
                            const ReebOptions& options) {
-  check_reeb_inputs("build_reeb_graph", mesh, graph, f);
-  DualGraphRecorder recorder(mesh.num_vertices());
-  IncrementalLevelLines lines(graph, f, recorder);
+  check_reeb_inputs("build_reeb_graph", mesh, graph, f, options);
+  DualGraphRecorder recorder(mesh, f, options);
+  IncrementalLevelLines lines(mesh, graph, f, recorder);
   lines.propagate_from(global_minimum(f));
   if (lines.visited_count() < mesh.num_vertices()) {
     if (!options.all_components)
@@ -318,7 +342,7 @@ ReebGraph build_reeb_graph(const Mesh& mesh, const MeshGraph& graph, const std::
     for (const Index v : order)
       if (!lines.visited(v)) lines.propagate_from(v);
   }
-  return recorder.finish(mesh, f);
+  return recorder.finish();
 }
 
 }  // namespace reebkit

@@ -50,6 +50,14 @@ struct ReebNode {
   /// Area-weighted Euclidean barycenter of the region's vertices, where the
   /// node is immersed (section 5.2).
   Vec3 barycenter = Vec3::Zero();
+  /// The node's part of the topological skeleton (section 5.2, figure 10a):
+  /// the Euclidean barycenter (mean position) of its level line, from the
+  /// line born at the node's event to the line just before the event that
+  /// ends it. Thinned along f (see ReebOptions::skeleton_levels): the line at
+  /// its birth, after each step whose f(v_t) enters a new level, and before
+  /// its end unless the previous point already shows it. A termination's
+  /// last point is the vertex where its line vanished.
+  std::vector<Vec3> skeleton;
 };
 
 /// The dual Reeb graph and the segmentation it induces.
@@ -80,6 +88,12 @@ struct ReebOptions {
   /// true: one root per connected component, each started at the
   /// component's minimum (components in the order of their minima).
   bool all_components = false;
+  /// Thinning of the skeleton: the range of f is split into this many equal
+  /// levels (default 100), and a level line adds a point to its node's
+  /// skeleton only at the first step of each level it absorbs a vertex in
+  /// (plus its birth and end). A node spanning a fraction s of the range of f
+  /// gets about s * skeleton_levels + 2 points. Must be >= 1.
+  Index skeleton_levels = 100;
 };
 
 /// The dual Reeb graph of f by discrete level-line propagation from the

@@ -12,14 +12,16 @@ namespace {
 /// The discrete level lines of Definition 6: the connected components of
 /// C(t), found by breadth-first search over the candidate vertices.
 struct LevelLines {
-  std::vector<Index> line;  ///< #V, line of each candidate vertex (kInvalidIndex elsewhere)
-  std::vector<Index> size;  ///< vertices per line
+  std::vector<Index> line;    ///< #V, line of each candidate vertex (kInvalidIndex elsewhere)
+  std::vector<Index> size;    ///< vertices per line
+  std::vector<Vec3> center;   ///< barycenter of each line's vertices (section 5.2)
 };
 
-void find_level_lines(const MeshGraph& graph, const std::vector<VertexState>& state,
+void find_level_lines(const Mesh& mesh, const MeshGraph& graph, const std::vector<VertexState>& state,
                       const std::vector<Index>& candidates, LevelLines& lines) {
   for (const Index v : candidates) lines.line[static_cast<std::size_t>(v)] = kInvalidIndex;
   lines.size.clear();
+  lines.center.clear();
   std::vector<Index> queue;
   for (const Index seed : candidates) {
     if (lines.line[static_cast<std::size_t>(seed)] != kInvalidIndex) continue;
@@ -38,29 +40,33 @@ void find_level_lines(const MeshGraph& graph, const std::vector<VertexState>& st
       }
     }
     lines.size.push_back(static_cast<Index>(queue.size()));
+    Vec3 sum = Vec3::Zero();
+    for (const Index u : queue) sum += mesh.vertices.row(u);
+    lines.center.push_back(sum / static_cast<double>(queue.size()));
   }
 }
 
 }  // namespace
 
-ReebGraph reference_reeb_graph(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f) {
-  check_reeb_inputs("reference_reeb_graph", mesh, graph, f);
+ReebGraph reference_reeb_graph(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f,
+                               const ReebOptions& options) {
+  check_reeb_inputs("reference_reeb_graph", mesh, graph, f, options);
   const auto n = static_cast<std::size_t>(mesh.num_vertices());
   std::vector<VertexState> state(n, VertexState::Unvisited);
   std::vector<bool> entered(n, false);  // joined C at the current step
   std::vector<Index> candidates;
   CandidateQueue queue;
-  DualGraphRecorder recorder(mesh.num_vertices());
+  DualGraphRecorder recorder(mesh, f, options);
 
   // C starts as the global minimum alone: one line, the root's.
   const Index minimum = global_minimum(f);
   state[static_cast<std::size_t>(minimum)] = VertexState::Candidate;
   candidates.push_back(minimum);
   queue.emplace(f[static_cast<std::size_t>(minimum)], minimum);
-  LevelLines old_lines{std::vector<Index>(n, kInvalidIndex), {1}};
+  LevelLines old_lines{std::vector<Index>(n, kInvalidIndex), {1}, {mesh.vertices.row(minimum)}};
   old_lines.line[static_cast<std::size_t>(minimum)] = 0;
   std::vector<Index> old_node = {recorder.start_root(minimum)};
-  LevelLines lines{std::vector<Index>(n, kInvalidIndex), {}};
+  LevelLines lines{std::vector<Index>(n, kInvalidIndex), {}, {}};
 
   LineChange change;
   std::vector<Index> changed;  // new lines of the event, in one-ring order
@@ -84,7 +90,7 @@ ReebGraph reference_reeb_graph(const Mesh& mesh, const MeshGraph& graph, const s
       candidates.push_back(w);
       queue.emplace(f[static_cast<std::size_t>(w)], w);
     }
-    find_level_lines(graph, state, candidates, lines);
+    find_level_lines(mesh, graph, state, candidates, lines);
 
     // Each new line's old lines: those it shares vertices with, and v's line
     // when it holds a neighbour of v.
@@ -119,14 +125,17 @@ ReebGraph reference_reeb_graph(const Mesh& mesh, const MeshGraph& graph, const s
 
     change.clear();
     change.old_nodes.push_back(old_node[static_cast<std::size_t>(v_line)]);
+    change.old_centers.push_back(old_lines.center[static_cast<std::size_t>(v_line)]);
     std::vector<Index> old_index = {v_line};  // old line of each entry of change.old_nodes
     change.new_lines = static_cast<Index>(changed.size());
     for (std::size_t k = 0; k < changed.size(); ++k) {
+      change.new_centers.push_back(lines.center[static_cast<std::size_t>(changed[k])]);
       for (const Index old : sources[static_cast<std::size_t>(changed[k])]) {
         auto at = std::find(old_index.begin(), old_index.end(), old);
         if (at == old_index.end()) {
           old_index.push_back(old);
           change.old_nodes.push_back(old_node[static_cast<std::size_t>(old)]);
+          change.old_centers.push_back(old_lines.center[static_cast<std::size_t>(old)]);
           at = old_index.end() - 1;
         }
         change.links.push_back({static_cast<Index>(at - old_index.begin()), static_cast<Index>(k)});
@@ -140,7 +149,7 @@ ReebGraph reference_reeb_graph(const Mesh& mesh, const MeshGraph& graph, const s
     old_node = std::move(node);
   }
   if (visited != mesh.num_vertices()) throw InvalidArgument("reference_reeb_graph: the mesh graph is not connected");
-  return recorder.finish(mesh, f);
+  return recorder.finish();
 }
 
 }  // namespace reebkit

@@ -13,9 +13,13 @@ namespace reebkit {
 
 /// The dual Reeb graph of f by discrete level-line propagation from the
 /// global minimum of f (by (value, vertex id)), every level line of C(t)
-/// recomputed at each step t. Gives exactly the graph of build_reeb_graph.
+/// recomputed at each step t, with its barycenter for the skeleton. Gives
+/// exactly the graph of build_reeb_graph (skeleton points up to rounding:
+/// the fast builder keeps running sums).
 /// \pre mesh, graph and f describe the same non-empty vertex set, f is
 ///      finite and the graph is connected; throws InvalidArgument otherwise.
-ReebGraph reference_reeb_graph(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f);
+///      Of `options` only skeleton_levels is used (one component only).
+ReebGraph reference_reeb_graph(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f,
+                               const ReebOptions& options = {});
 
 }  // namespace reebkit
