@@ -6,8 +6,8 @@ namespace reebkit {
 
 MeshAnalysis analyze_mesh(Mesh mesh, const AnalysisOptions& options) {
   MeshAnalysis a;
-  a.mesh = std::move(mesh);
   Timer timer;
+  a.mesh = fill_holes(mesh, options.holes);
   a.graph = build_mesh_graph(a.mesh);
   a.timings.graph = timer.lap();
   a.features = extract_feature_points(a.graph, options.features);

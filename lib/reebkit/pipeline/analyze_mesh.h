@@ -5,12 +5,16 @@
 
 #include "reebkit/features/feature_points.h"
 #include "reebkit/features/quotient_function.h"
+#include "reebkit/mesh/hole_filling.h"
 #include "reebkit/mesh/mesh_graph.h"
 #include "reebkit/reeb/reeb_graph.h"
 
 namespace reebkit {
 
 struct AnalysisOptions {
+  /// Small holes are closed first (fill_holes), so that they add no nodes to
+  /// the Reeb graph; max_loop_length = 0 keeps the mesh as it is.
+  HoleFillingOptions holes;
   FeatureOptions features;  ///< feature point extraction (epsilon, start vertex, ...)
   ReebOptions reeb;         ///< Reeb graph construction
   bool reeb_graph = true;   ///< false: stop after f_q (no Reeb graph)
@@ -18,7 +22,7 @@ struct AnalysisOptions {
 
 /// Wall-clock milliseconds of each step (file reading excluded).
 struct AnalysisTimings {
-  double graph = 0;     ///< build_mesh_graph
+  double graph = 0;     ///< fill_holes + build_mesh_graph
   double features = 0;  ///< extract_feature_points
   double quotient = 0;  ///< quotient_function
   double reeb = 0;      ///< build_reeb_graph (0 when not built)
@@ -27,7 +31,7 @@ struct AnalysisTimings {
 
 /// Everything computed for one mesh.
 struct MeshAnalysis {
-  Mesh mesh;
+  Mesh mesh;  ///< the input with its small holes filled (new vertices last, see fill_holes)
   MeshGraph graph;
   FeaturePoints features;
   QuotientFunction fq;
