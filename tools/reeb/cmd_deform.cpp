@@ -56,7 +56,7 @@ void print(const MeshAnalysis& a, const Deformation& plan) {
             << " by the full angle); vertex ids as in the file:";
   Index shown = 0;
   for (Index v = 0; v < a.mesh.num_vertices() && shown < 20; ++v)
-    if (plan.weight[static_cast<std::size_t>(v)] > 0.0) {
+    if (plan.weight[static_cast<std::size_t>(v)] > 0.0 && a.mesh.source_index(v) != kInvalidIndex) {
       std::cout << " " << a.mesh.source_index(v);
       ++shown;
     }
@@ -78,7 +78,8 @@ int run_deform(const std::vector<std::string>& args) {
        "rotation axis x y z (default: from the geometry, positive angles fold the component towards the root)")
       ("falloff", po::value(&deform.falloff)->default_value(deform.falloff),
        "fraction of the component's extent over which the rotation ramps up from 0, in [0, 1]")
-      ("output,o", po::value(&out_path), "write the posed mesh (.off or .ply)");
+      ("output,o", po::value(&out_path),
+       "write the posed mesh (.off or .ply): the analyzed mesh, i.e. cleaned, small holes filled (new vertices last)");
   po::positional_options_description positional;
   positional.add("mesh", 1);
   po::variables_map vm;
