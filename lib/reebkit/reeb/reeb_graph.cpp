@@ -9,6 +9,16 @@
 
 namespace reebkit {
 
+const char* node_type_name(NodeType type) {
+  switch (type) {
+    case NodeType::Root: return "root";
+    case NodeType::Bifurcation: return "bifurcation";
+    case NodeType::Junction: return "junction";
+    case NodeType::Termination: return "termination";
+  }
+  return "unknown";
+}
+
 Index ReebGraph::connected_components() const {
   std::vector<Index> parent(nodes.size());
   std::iota(parent.begin(), parent.end(), Index{0});

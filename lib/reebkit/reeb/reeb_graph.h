@@ -25,6 +25,9 @@ enum class NodeType : std::uint8_t {
   Termination   ///< eq. (11): a level line vanished (ends only: the node is a leaf)
 };
 
+/// "root", "bifurcation", "junction" or "termination".
+const char* node_type_name(NodeType type);
+
 /// One region of the segmentation: the vertices absorbed by one level line
 /// between two events. The vertex v_t of an event belongs to the region that
 /// ends there. A line may merge into a junction before any vertex of it was
