@@ -30,6 +30,7 @@ bool parse(const std::vector<std::string>& args, const std::string& usage,
 
 // Subcommand entry points, one source file each (cmd_<name>.cpp).
 int run_features(const std::vector<std::string>& args);
+int run_graph(const std::vector<std::string>& args);
 int run_deform(const std::vector<std::string>& args);
 
 }  // namespace reebkit::cli

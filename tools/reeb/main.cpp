@@ -11,6 +11,7 @@ namespace reebkit::cli {
 const std::vector<Command>& commands() {
   static const std::vector<Command> all = {
       {"features", "feature points and quotient function f_q of a mesh", run_features},
+      {"graph", "high-level Reeb graph, segmentation and skeleton of a mesh", run_graph},
       {"deform", "turn the component of a Reeb graph node (a limb) about where it attaches", run_deform},
   };
   return all;
