@@ -79,6 +79,15 @@ TEST(Deformation, TurnsTheComponentAboutThePivotAndNothingElse) {
   EXPECT_EQ(plan.nodes, std::vector<Index>{leaf});  // a leaf's component is the leaf
   EXPECT_NEAR(plan.axis.norm(), 1.0, 1e-12);
   const double scale = a.features.diameter;
+  // The pivot sits inside the attach loop: closer to the loop's barycenter
+  // than the loop's farthest vertex.
+  ASSERT_FALSE(plan.attach_loop.empty());
+  Vec3 loop_center = Vec3::Zero();
+  for (const Index v : plan.attach_loop) loop_center += row(a.mesh, v);
+  loop_center /= static_cast<double>(plan.attach_loop.size());
+  double loop_radius = 0.0;
+  for (const Index v : plan.attach_loop) loop_radius = std::max(loop_radius, (row(a.mesh, v) - loop_center).norm());
+  EXPECT_LT((plan.pivot - loop_center).norm(), loop_radius);
   std::vector<Index> rigid;
   for (Index v = 0; v < a.mesh.num_vertices(); ++v) {
     const double w = plan.weight[static_cast<std::size_t>(v)];
@@ -227,6 +236,7 @@ MeshAnalysis moved_analysis(const MeshAnalysis& a, const Similarity& t) {
   for (ReebNode& node : moved.reeb.nodes) {
     node.area *= t.scale * t.scale;
     node.barycenter = t.scale * t.rotation * node.barycenter + t.translation;
+    for (Vec3& point : node.skeleton) point = t.scale * t.rotation * point + t.translation;
   }
   return moved;
 }

@@ -16,16 +16,6 @@ namespace reebkit::cli {
 
 namespace {
 
-const char* type_name(NodeType type) {
-  switch (type) {
-    case NodeType::Root: return "root";
-    case NodeType::Bifurcation: return "bifurcation";
-    case NodeType::Junction: return "junction";
-    case NodeType::Termination: return "termination";
-  }
-  return "?";
-}
-
 std::ostream& operator<<(std::ostream& out, const Vec3& p) {
   return out << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
 }
@@ -35,8 +25,8 @@ void list_nodes(const ReebGraph& g) {
             << "  node  starts at    ends at      vertices  f_q range      barycenter\n";
   for (Index n = 0; n < g.num_nodes(); ++n) {
     const ReebNode& node = g.nodes[static_cast<std::size_t>(n)];
-    std::cout << "  " << std::setw(4) << n << "  " << std::left << std::setw(12) << type_name(node.type) << " "
-              << std::setw(12) << type_name(node.end) << std::right << " " << std::setw(8) << node.vertex_count
+    std::cout << "  " << std::setw(4) << n << "  " << std::left << std::setw(12) << node_type_name(node.type) << " "
+              << std::setw(12) << node_type_name(node.end) << std::right << " " << std::setw(8) << node.vertex_count
               << "  " << std::fixed << std::setprecision(3) << node.fq_min << "-" << node.fq_max
               << std::defaultfloat << std::setprecision(6) << "    " << node.barycenter << "\n";
   }
@@ -50,7 +40,7 @@ void print(const MeshAnalysis& a, const Deformation& plan) {
   const auto full = std::count(plan.weight.begin(), plan.weight.end(), 1.0);
   std::cout << "component: node" << (plan.nodes.size() > 1 ? "s" : "");
   for (const Index n : plan.nodes) std::cout << " " << n;
-  std::cout << "\npivot " << plan.pivot << " (barycenter of the " << plan.attach_loop.size()
+  std::cout << "\npivot " << plan.pivot << " (the node's first skeleton point; " << plan.attach_loop.size()
             << " attach-loop vertices), axis " << plan.axis << ", angle " << plan.angle_degrees << " degrees\n"
             << "moved " << moved << " of " << a.mesh.num_vertices() << " vertices (" << full
             << " by the full angle); vertex ids as in the file:";

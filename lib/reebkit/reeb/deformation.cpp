@@ -103,13 +103,9 @@ Deformation plan_deformation(const MeshAnalysis& analysis, const DeformOptions& 
     else if (!std::all_of(first, last, inside))
       held.push_back(v);
   }
-  const Index birth = g.nodes[static_cast<std::size_t>(options.node)].birth_vertex;
-  if (plan.attach_loop.empty()) {
-    plan.pivot = analysis.mesh.vertices.row(birth).transpose();
-  } else {
-    for (const Index v : plan.attach_loop) plan.pivot += analysis.mesh.vertices.row(v).transpose();
-    plan.pivot /= static_cast<double>(plan.attach_loop.size());
-  }
+  const ReebNode& node = g.nodes[static_cast<std::size_t>(options.node)];
+  plan.pivot = node.skeleton.empty() ? Vec3(analysis.mesh.vertices.row(node.birth_vertex).transpose())
+                                     : node.skeleton.front();
 
   if (options.axis != Vec3::Zero()) {
     plan.axis = options.axis.normalized();
@@ -127,7 +123,7 @@ Deformation plan_deformation(const MeshAnalysis& analysis, const DeformOptions& 
   // in the parent region, when the component has no vertex next to it),
   // times the same ramp from the held vertices.
   const DistanceField from_loop =
-      dijkstra(mg, plan.attach_loop.empty() ? std::vector<Index>{birth} : plan.attach_loop);
+      dijkstra(mg, plan.attach_loop.empty() ? std::vector<Index>{node.birth_vertex} : plan.attach_loop);
   for (Index v = 0; v < nv; ++v)
     if (inside(v)) plan.extent = std::max(plan.extent, from_loop.distance[static_cast<std::size_t>(v)]);
   const double ramp = options.falloff * plan.extent;

@@ -44,8 +44,10 @@ struct Deformation {
   /// Vertices of the component next (in the mesh graph) to a vertex of a
   /// parent region of options.node: where the component attaches, ascending.
   std::vector<Index> attach_loop;
-  /// Barycenter of attach_loop (the position of the node's birth vertex, the
-  /// vertex whose absorption created the node, when the loop is empty).
+  /// Where the component turns: the node's first skeleton point, the
+  /// barycenter of its level line at its birth, i.e. of the loop where it
+  /// leaves its parent (the position of its birth vertex, the vertex whose
+  /// absorption created the node, for a graph without skeleton).
   Vec3 pivot = Vec3::Zero();
   /// Unit rotation axis. The default is d x w with d = area-weighted
   /// barycenter of the component - pivot and w = barycenter of the root
