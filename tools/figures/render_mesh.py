@@ -94,19 +94,22 @@ def read_ply(path):
 
 
 def read_obj_lines(path):
-    """Points and polylines (`v` and `l` records) of an OBJ file."""
-    points, lines = [], []
+    """Points and polylines (`v` and `l` records) of an OBJ file, the
+    polylines grouped by the object (`o` record) they belong to."""
+    points, groups, name = [], {}, ""
     with open(path) as f:
         for line in f:
             w = line.split()
             if not w:
                 continue
-            if w[0] == "v":
+            if w[0] == "o":
+                name = " ".join(w[1:])
+            elif w[0] == "v":
                 points.append([float(x) for x in w[1:4]])
             elif w[0] == "l":
                 idx = [int(x.split("/")[0]) for x in w[1:]]
-                lines.append([i - 1 if i > 0 else len(points) + i for i in idx])
-    return np.array(points), lines
+                groups.setdefault(name, []).append([i - 1 if i > 0 else len(points) + i for i in idx])
+    return np.array(points), groups
 
 
 def render(mesh_path, out_path, lines_path=None, view=(15, -60), title=None):
@@ -122,12 +125,24 @@ def render(mesh_path, out_path, lines_path=None, view=(15, -60), title=None):
     eye = np.array([np.cos(elev) * np.cos(azim), np.cos(elev) * np.sin(azim), np.sin(elev)])
     shade = 0.45 + 0.55 * np.abs(normals @ eye)  # two-sided Lambert
     face_colors = np.clip(colors[tris].mean(axis=1) * shade[:, None], 0, 1)
-    ax.add_collection3d(Poly3DCollection(tri_pts, facecolors=face_colors, edgecolors="none", linewidths=0))
+    # A graph or skeleton runs inside the volume (barycenters of level lines):
+    # then the surface is drawn translucent and the lines on top of it.
+    alpha = 0.35 if lines_path else 1.0
+    ax.computed_zorder = False
+    ax.add_collection3d(Poly3DCollection(tri_pts, facecolors=face_colors, edgecolors="none", linewidths=0,
+                                         alpha=alpha, zorder=1))
     if lines_path:
-        points, lines = read_obj_lines(lines_path)
-        segments = [points[[a, b]] for line in lines for a, b in zip(line[:-1], line[1:])]
-        ax.add_collection3d(Line3DCollection(segments, colors="black", linewidths=1.6))
-        ax.scatter(points[:, 0], points[:, 1], points[:, 2], color="black", s=6, depthshade=False)
+        # `reeb graph --obj` writes the graph (object reeb_graph: node
+        # immersions and edges) and its skeleton; the graph is drawn in red.
+        points, groups = read_obj_lines(lines_path)
+        for name, lines in groups.items():
+            graph = name == "reeb_graph"
+            segments = [points[[a, b]] for line in lines for a, b in zip(line[:-1], line[1:])]
+            ax.add_collection3d(Line3DCollection(segments, colors="crimson" if graph else "black",
+                                                 linewidths=2.2 if graph else 0.9, zorder=3 if graph else 2))
+            if graph:
+                used = sorted({i for line in lines for i in line})
+                ax.scatter(*points[used].T, color="crimson", s=14, depthshade=False, zorder=4)
     lo, hi = verts.min(axis=0), verts.max(axis=0)
     center, radius = (lo + hi) / 2, (hi - lo).max() / 2
     for setter, c in zip((ax.set_xlim, ax.set_ylim, ax.set_zlim), center):
