@@ -169,6 +169,22 @@ TEST(FillHoles, KeepsTheSourceNumbering) {
   expect_extends(filled, box, 1);
 }
 
+TEST(FillHoles, OriginalSurfaceUndoesTheFilling) {
+  Mesh box = open_box();
+  box.source_vertex = {10, 11, 12, 13, 14, 15, 16, 17};
+  const Mesh filled = fill_holes(box, fill_up_to(kFillAll));
+  ASSERT_EQ(filled.num_vertices(), 9);
+  EXPECT_EQ(original_vertex_count(filled), 8);
+  const Mesh surface = original_surface(filled);
+  EXPECT_EQ(surface.vertices, box.vertices);
+  EXPECT_EQ(surface.triangles, box.triangles);
+  EXPECT_EQ(surface.source_vertex, box.source_vertex);
+  // A mesh without filled holes (identity numbering included) is its own surface.
+  const Mesh cube = make_cube();
+  EXPECT_EQ(original_vertex_count(cube), 8);
+  EXPECT_EQ(original_surface(cube).triangles, cube.triangles);
+}
+
 TEST(FillHoles, RejectsANegativeThreshold) {
   EXPECT_THROW(fill_holes(make_cube(), fill_up_to(-1.0)), InvalidArgument);
   EXPECT_THROW(fill_holes(make_cube(), fill_up_to(std::nan(""))), InvalidArgument);

@@ -5,6 +5,7 @@
 #include "reebkit/core/timer.h"
 #include "reebkit/geodesic/dijkstra.h"
 #include "reebkit/io/ply.h"
+#include "reebkit/mesh/hole_filling.h"
 #include "reebkit/mesh/load_mesh.h"
 #include "reebkit/output/colormap.h"
 #include "reebkit/output/json_writer.h"
@@ -19,10 +20,13 @@ namespace reebkit::cli {
 namespace {
 
 void print(const MeshAnalysis& r, std::size_t index, std::size_t count) {
-  std::cout << (count > 1 ? "component " + std::to_string(index) + ": " : std::string()) << r.mesh.num_vertices()
-            << " vertices, " << r.mesh.num_triangles() << " triangles, geodesic diameter " << r.features.diameter
-            << "\n"
-            << r.features.vertices.size() << " feature points (vertex ids as in the file):\n";
+  const Index added = r.mesh.num_vertices() - original_vertex_count(r.mesh);
+  std::cout << (count > 1 ? "component " + std::to_string(index) + ": " : std::string())
+            << original_vertex_count(r.mesh) << " vertices"
+            << (added > 0 ? " (+" + std::to_string(added) + " added to close small holes)" : std::string())
+            << ", geodesic diameter " << r.features.diameter << "\n"
+            << r.features.vertices.size()
+            << " feature points (vertex ids as in the file; -1: a vertex added to close a hole):\n";
   for (const Index v : r.features.vertices)
     std::cout << "  " << std::setw(8) << r.mesh.source_index(v) << "  (" << r.mesh.vertices(v, 0) << ", "
               << r.mesh.vertices(v, 1) << ", " << r.mesh.vertices(v, 2) << ")\n";
@@ -40,8 +44,8 @@ void write_json(const std::string& path, const std::string& mesh_path, const Fea
   json.key("components").begin_array();
   for (const MeshAnalysis& r : results) {
     json.begin_object()
-        .field("vertices", static_cast<long long>(r.mesh.num_vertices()))
-        .field("triangles", static_cast<long long>(r.mesh.num_triangles()))
+        .field("vertices", static_cast<long long>(original_vertex_count(r.mesh)))
+        .field("hole_filling_vertices", static_cast<long long>(r.mesh.num_vertices() - original_vertex_count(r.mesh)))
         .field("diameter", r.features.diameter);
     json.key("diameter_ends").numbers(std::vector<long long>{r.mesh.source_index(r.features.source1),
                                                              r.mesh.source_index(r.features.source2)});
@@ -66,19 +70,24 @@ void write_json(const std::string& path, const std::string& mesh_path, const Fea
 
 // f_q as viridis colors; the geodesic disc of radius 1.5% of the diameter
 // around each feature point painted red so that the points are visible.
+// Shows the surface as read: vertices added by hole filling (the last ones)
+// are left out.
 void write_fq_ply(const std::string& path, const MeshAnalysis& r) {
+  const Mesh surface = original_surface(r.mesh);
+  const auto n = static_cast<std::size_t>(surface.num_vertices());
+  const std::vector<double> fq(r.fq.value.begin(), r.fq.value.begin() + static_cast<std::ptrdiff_t>(n));
   PlyVertexData data;
-  data.colors = colorize(r.fq.value, 0.0, 1.0);
-  std::vector<double> marker(r.fq.value.size(), 0.0);
+  data.colors = colorize(fq, 0.0, 1.0);
+  std::vector<double> marker(n, 0.0);
   const DistanceField near = dijkstra(r.graph, r.features.vertices, DijkstraOptions{0.015 * r.features.diameter});
-  for (Index v = 0; v < r.mesh.num_vertices(); ++v) {
+  for (Index v = 0; v < surface.num_vertices(); ++v) {
     if (near.nearest_source[v] == kInvalidIndex) continue;
     data.colors.row(v) << 0.85, 0.1, 0.1;
     marker[static_cast<std::size_t>(v)] = near.nearest_source[v] + 1;
   }
-  data.scalars.emplace_back("fq", r.fq.value);
+  data.scalars.emplace_back("fq", fq);
   data.scalars.emplace_back("feature", marker);
-  write_ply(path, r.mesh, data);
+  write_ply(path, surface, data);
 }
 
 }  // namespace

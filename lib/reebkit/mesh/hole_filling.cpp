@@ -134,4 +134,26 @@ Mesh fill_holes(const Mesh& mesh, const HoleFillingOptions& options) {
   return filled;
 }
 
+Index original_vertex_count(const Mesh& mesh) {
+  const auto& source = mesh.source_vertex;
+  const auto added = std::find(source.begin(), source.end(), kInvalidIndex);
+  return source.empty() ? mesh.num_vertices() : static_cast<Index>(added - source.begin());
+}
+
+Mesh original_surface(const Mesh& mesh) {
+  const Index n = original_vertex_count(mesh);
+  if (n == mesh.num_vertices()) return mesh;
+  Mesh out;
+  out.source = mesh.source;
+  out.vertices = mesh.vertices.topRows(n);
+  out.source_vertex.assign(mesh.source_vertex.begin(), mesh.source_vertex.begin() + n);
+  Index kept = 0;
+  out.triangles.resize(mesh.num_triangles(), 3);
+  for (Index f = 0; f < mesh.num_triangles(); ++f)
+    if ((mesh.triangles.row(f).array() < n).all()) out.triangles.row(kept++) = mesh.triangles.row(f);
+  out.triangles.conservativeResize(kept, 3);
+  return out;
+}
+
 }  // namespace reebkit
+

@@ -38,4 +38,13 @@ struct HoleFillingOptions {
 ///      triangle indices in [0, #V).
 Mesh fill_holes(const Mesh& mesh, const HoleFillingOptions& options = {});
 
+/// Number of vertices of `mesh` that are not added by fill_holes (they come
+/// first): per-vertex results for the input surface are their first entries.
+Index original_vertex_count(const Mesh& mesh);
+
+/// `mesh` without what fill_holes added: its first original_vertex_count(mesh)
+/// vertices and the triangles among them, in their order. The surface that
+/// outputs show and number as in the file.
+Mesh original_surface(const Mesh& mesh);
+
 }  // namespace reebkit

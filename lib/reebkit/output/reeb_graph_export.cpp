@@ -2,6 +2,7 @@
 
 #include "reebkit/core/error.h"
 #include "reebkit/io/ply.h"
+#include "reebkit/mesh/hole_filling.h"
 #include "reebkit/output/colormap.h"
 #include "reebkit/output/json_writer.h"
 
@@ -53,8 +54,9 @@ void write_reeb_graph_json(const std::filesystem::path& path, const std::vector<
   long long vertices = 0, triangles = 0, cycles = 0, leaves = 0;
   AnalysisTimings time;
   for (const MeshAnalysis& r : components) {
-    vertices += r.mesh.num_vertices();
-    triangles += r.mesh.num_triangles();
+    const Mesh surface = original_surface(r.mesh);
+    vertices += surface.num_vertices();
+    triangles += surface.num_triangles();
     cycles += r.reeb.independent_cycles();
     for (const ReebNode& node : r.reeb.nodes) leaves += node.end == NodeType::Termination;
     time.graph += r.timings.graph;
@@ -128,10 +130,14 @@ void write_reeb_graph_json(const std::filesystem::path& path, const std::vector<
 void write_segmentation_ply(const std::filesystem::path& path, const std::vector<MeshAnalysis>& components) {
   check_components("write_segmentation_ply", components);
   const std::vector<Index> offset = node_offsets(components);
+  // The surfaces as read: vertices and triangles added by hole filling are
+  // left out (they come last in each component).
+  std::vector<Mesh> surfaces;
   Index vertices = 0, triangles = 0;
   for (const MeshAnalysis& r : components) {
-    vertices += r.mesh.num_vertices();
-    triangles += r.mesh.num_triangles();
+    surfaces.push_back(original_surface(r.mesh));
+    vertices += surfaces.back().num_vertices();
+    triangles += surfaces.back().num_triangles();
   }
   Mesh mesh;
   mesh.vertices.resize(vertices, 3);
@@ -143,16 +149,17 @@ void write_segmentation_ply(const std::filesystem::path& path, const std::vector
   Index v0 = 0, t0 = 0;
   for (std::size_t c = 0; c < components.size(); ++c) {
     const MeshAnalysis& r = components[c];
-    mesh.vertices.middleRows(v0, r.mesh.num_vertices()) = r.mesh.vertices;
-    mesh.triangles.middleRows(t0, r.mesh.num_triangles()) = r.mesh.triangles.array() + v0;
-    for (Index v = 0; v < r.mesh.num_vertices(); ++v) {
+    const Mesh& surface = surfaces[c];
+    mesh.vertices.middleRows(v0, surface.num_vertices()) = surface.vertices;
+    mesh.triangles.middleRows(t0, surface.num_triangles()) = surface.triangles.array() + v0;
+    for (Index v = 0; v < surface.num_vertices(); ++v) {
       const Index id = offset[c] + r.reeb.vertex_node[static_cast<std::size_t>(v)];
       data.colors.row(v0 + v) = category_color(id).transpose();
       node[static_cast<std::size_t>(v0 + v)] = id;
       fq[static_cast<std::size_t>(v0 + v)] = r.fq.value[static_cast<std::size_t>(v)];
     }
-    v0 += r.mesh.num_vertices();
-    t0 += r.mesh.num_triangles();
+    v0 += surface.num_vertices();
+    t0 += surface.num_triangles();
   }
   data.scalars.emplace_back("node", std::move(node));
   data.scalars.emplace_back("fq", std::move(fq));
