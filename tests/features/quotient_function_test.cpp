@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace reebkit {
 namespace {
@@ -28,7 +29,8 @@ TEST(QuotientFunction, IsOneMinusNormalizedDistanceToNearestFeature) {
   EXPECT_DOUBLE_EQ(fq.normalization, max_min);
   for (Index v = 0; v < g.num_vertices(); ++v) {
     const double nearest = single[fq.nearest_feature[v]].distance[v];
-    EXPECT_NEAR(fq.value[v], 1.0 - nearest / max_min, 1e-12);
+    EXPECT_NEAR(fq.value[v], 1.0 - nearest / max_min, 0.5 / 16777216.0 + 1e-15);  // rounded to 2^-24
+    EXPECT_EQ(std::round(fq.value[v] * 16777216.0), fq.value[v] * 16777216.0);
     for (const auto& s : single) EXPECT_LE(nearest, s.distance[v]);  // eq. (8): the closest one
   }
 }
@@ -55,7 +57,7 @@ TEST(QuotientFunction, InvariantToSimilarityTransforms) {
   t.scale = 37.5;
   t.translation = Vec3(-4, 2, 9);
   const QuotientFunction moved = quotient_function(build_mesh_graph(transformed(mesh, t)), fp.vertices);
-  for (Index v = 0; v < g.num_vertices(); ++v) EXPECT_NEAR(moved.value[v], reference.value[v], 1e-9);
+  for (Index v = 0; v < g.num_vertices(); ++v) EXPECT_EQ(moved.value[v], reference.value[v]);
   EXPECT_NEAR(moved.normalization, 37.5 * reference.normalization, 1e-9);
 }
 

@@ -11,6 +11,8 @@ namespace reebkit {
 
 struct QuotientFunction {
   /// f_q(v) = 1 - d(v, v_c) / normalization, in [0, 1]; 1 on feature points.
+  /// Rounded to a multiple of 2^-24, so that the last-bit noise of a rotated
+  /// or rescaled mesh cannot reorder vertices (equal values order by id).
   std::vector<double> value;
   /// eq. (8): v_c, as an index into the feature point list.
   std::vector<Index> nearest_feature;
