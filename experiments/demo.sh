@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# The main job on the embedded collection (datasets/*.off): for every mesh,
-# feature points and f_q (JSON + colored PLY + a PNG figure) in results/demo/.
+# The main job on the embedded collection (datasets/*.off): for every mesh, the
+# high-level Reeb graph (JSON, segmentation PLY, skeleton OBJ and a PNG figure
+# of the graph over the segmented mesh) and f_q with its feature points (PLY +
+# PNG), in results/demo/.
 # Usage: experiments/demo.sh BUILD_DIR   (bash tools/run demo calls it)
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -9,19 +11,23 @@ reeb=$build/tools/reeb
 out=$root/results/demo
 mkdir -p "$out"
 
-echo "== reeb features on the embedded collection -> $out"
-printf '%-10s %8s %8s %9s %10s\n' mesh vertices faces features time_ms
+echo "== reeb graph on the embedded collection -> $out"
+printf '%-10s %8s %9s %6s %7s %7s %10s\n' mesh vertices features nodes leaves cycles time_ms
 for mesh in "$root"/datasets/*.off; do
   name=$(basename "$mesh" .off)
-  "$reeb" features "$mesh" -o "$out/$name.features.json" --ply "$out/$name.fq.ply" > "$out/$name.log"
-  /usr/bin/python3 - "$out/$name.features.json" "$name" <<'PY'
-import json, sys
-d = json.load(open(sys.argv[1]))["components"][0]
-t = d["timings_ms"]
-print(f'{sys.argv[2]:<10} {d["vertices"]:>8} {d["triangles"]:>8} {len(d["feature_points"]):>9} '
-      f'{t["graph"] + t["features"] + t["quotient"]:>10.2f}')
-PY
+  "$reeb" graph "$mesh" -o "$out/$name.graph.json" --ply "$out/$name.segments.ply" \
+    --obj "$out/$name.skeleton.obj" --png "$out/$name.graph.png" > "$out/$name.graph.log"
+  "$reeb" features "$mesh" --ply "$out/$name.fq.ply" > "$out/$name.features.log"
   /usr/bin/python3 "$root/tools/figures/render_mesh.py" "$out/$name.fq.ply" "$out/$name.fq.png" \
     --title "$name: f_q and feature points"
+  /usr/bin/python3 - "$out/$name.graph.json" "$name" <<'PY'
+import json, sys
+g = json.load(open(sys.argv[1]))
+t = g["timings_ms"]
+print(f'{sys.argv[2]:<10} {g["vertices"]:>8} {len(g["feature_points"]):>9} {len(g["nodes"]):>6} '
+      f'{g["leaves"]:>7} {g["cycles"]:>7} {sum(t.values()):>10.2f}')
+PY
 done
-echo "== figures: $out/*.fq.png (f_q in viridis, feature points in red)"
+echo "== figures: $out/*.graph.png (segments, Reeb graph in red, skeleton in black)"
+echo "            $out/*.fq.png (f_q in viridis, feature points in red)"
+echo "   genus of the closed meshes: anchor 4, helmet 3, eight 2, elk 1, the others 0"
