@@ -2,13 +2,23 @@
 
 #include "reebkit/core/timer.h"
 
+#include <algorithm>
+
 namespace reebkit {
 
 MeshAnalysis analyze_mesh(Mesh mesh, const AnalysisOptions& options) {
   MeshAnalysis a;
   Timer timer;
-  a.mesh = fill_holes(mesh, options.holes);
+  a.mesh = std::move(mesh);
   a.graph = build_mesh_graph(a.mesh);
+  // Only a mesh with a boundary (a ring that is not a closed cycle) can have
+  // holes to fill; the graph already says whether there is one.
+  const bool closed = std::all_of(a.graph.ring.begin(), a.graph.ring.end(),
+                                  [](RingKind r) { return r == RingKind::Closed; });
+  if (!closed && options.holes.max_loop_length > 0) {
+    a.mesh = fill_holes(a.mesh, options.holes);
+    a.graph = build_mesh_graph(a.mesh);
+  }
   a.timings.graph = timer.lap();
   a.features = extract_feature_points(a.graph, options.features);
   a.timings.features = timer.lap();
