@@ -1,5 +1,8 @@
 #include "reeb/cli.h"
 
+#include "reebkit/core/timer.h"
+
+#include <iomanip>
 #include <iostream>
 
 namespace reebkit::cli {
@@ -16,6 +19,18 @@ bool parse(const std::vector<std::string>& args, const std::string& usage,
   }
   po::notify(vm);
   return true;
+}
+
+LoadedMesh load_for_command(const std::string& path, bool all_components) {
+  Timer timer;
+  CleanupOptions cleanup;
+  cleanup.keep_all_components = all_components;
+  LoadedMesh out{load_mesh(path, cleanup), 0.0};
+  out.milliseconds = timer.lap();
+  for (const std::string& w : out.cleaned.report.warnings) std::cerr << "warning: " << w << "\n";
+  std::cout << path << ": read and cleaned in " << std::fixed << std::setprecision(2) << out.milliseconds << " ms\n"
+            << std::defaultfloat;
+  return out;
 }
 
 }  // namespace reebkit::cli

@@ -1,6 +1,8 @@
 // Shared plumbing of the `reeb` subcommands.
 #pragma once
 
+#include "reebkit/mesh/load_mesh.h"
+
 #include <boost/program_options.hpp>
 
 #include <functional>
@@ -27,6 +29,16 @@ const std::vector<Command>& commands();
 bool parse(const std::vector<std::string>& args, const std::string& usage,
            const po::options_description& options, const po::positional_options_description& positional,
            po::variables_map& vm);
+
+/// A mesh read and cleaned for a subcommand, and the time that took.
+struct LoadedMesh {
+  CleanedMesh cleaned;
+  double milliseconds = 0;
+};
+
+/// Reads and cleans `path` (every component, or only the largest): cleanup
+/// warnings go to stderr, the read time to stdout.
+LoadedMesh load_for_command(const std::string& path, bool all_components);
 
 // Subcommand entry points, one source file each (cmd_<name>.cpp).
 int run_features(const std::vector<std::string>& args);

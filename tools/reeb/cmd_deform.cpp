@@ -5,7 +5,6 @@
 #include "reeb/cli.h"
 #include "reebkit/core/error.h"
 #include "reebkit/io/mesh_io.h"
-#include "reebkit/mesh/load_mesh.h"
 #include "reebkit/reeb/deformation.h"
 
 #include <algorithm>
@@ -79,8 +78,7 @@ int run_deform(const std::vector<std::string>& args) {
   if (!axis.empty() && axis.size() != 3) throw po::error("--axis takes three numbers");
   if (axis.size() == 3) deform.axis = Vec3(axis[0], axis[1], axis[2]);
 
-  CleanedMesh cleaned = load_mesh(mesh_path);
-  for (const std::string& w : cleaned.report.warnings) std::cerr << "warning: " << w << "\n";
+  CleanedMesh cleaned = load_for_command(mesh_path, false).cleaned;
   const MeshAnalysis analysis = analyze_mesh(std::move(cleaned.components.front()));
   std::cout << mesh_path << ": " << analysis.mesh.num_vertices() << " vertices, " << analysis.reeb.num_nodes()
             << " Reeb graph nodes, " << analysis.features.vertices.size() << " feature points\n";

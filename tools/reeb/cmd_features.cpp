@@ -2,11 +2,9 @@
 // (Tierny et al. 2006, section 4.1).
 #include "reeb/cli.h"
 #include "reebkit/core/error.h"
-#include "reebkit/core/timer.h"
 #include "reebkit/geodesic/dijkstra.h"
 #include "reebkit/io/ply.h"
 #include "reebkit/mesh/hole_filling.h"
-#include "reebkit/mesh/load_mesh.h"
 #include "reebkit/output/colormap.h"
 #include "reebkit/output/json_writer.h"
 #include "reebkit/pipeline/analyze_mesh.h"
@@ -114,14 +112,9 @@ int run_features(const std::vector<std::string>& args) {
   po::variables_map vm;
   if (!parse(args, "reeb features MESH [-o features.json] [--ply fq.ply]", options, positional, vm)) return 0;
 
-  Timer timer;
-  CleanupOptions cleanup;
-  cleanup.keep_all_components = all_components;
-  CleanedMesh cleaned = load_mesh(mesh_path, cleanup);
-  const double load_ms = timer.lap();
-  for (const std::string& w : cleaned.report.warnings) std::cerr << "warning: " << w << "\n";
-  std::cout << mesh_path << ": read and cleaned in " << std::fixed << std::setprecision(2) << load_ms << " ms\n"
-            << std::defaultfloat;
+  LoadedMesh loaded = load_for_command(mesh_path, all_components);
+  CleanedMesh& cleaned = loaded.cleaned;
+  const double load_ms = loaded.milliseconds;
 
   std::vector<MeshAnalysis> results;
   for (std::size_t c = 0; c < cleaned.components.size(); ++c) {

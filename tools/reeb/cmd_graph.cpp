@@ -3,8 +3,6 @@
 // skeleton (section 5.2), as JSON, a colored PLY, OBJ lines and a figure.
 #include "reeb/cli.h"
 #include "reebkit/core/error.h"
-#include "reebkit/core/timer.h"
-#include "reebkit/mesh/load_mesh.h"
 #include "reebkit/output/reeb_graph_export.h"
 #include "reebkit/pipeline/analyze_mesh.h"
 
@@ -88,14 +86,7 @@ int run_graph(const std::vector<std::string>& args) {
              options, positional, vm))
     return 0;
 
-  Timer timer;
-  CleanupOptions cleanup;
-  cleanup.keep_all_components = all_components;
-  CleanedMesh cleaned = load_mesh(mesh_path, cleanup);
-  for (const std::string& w : cleaned.report.warnings) std::cerr << "warning: " << w << "\n";
-  std::cout << mesh_path << ": read and cleaned in " << std::fixed << std::setprecision(2) << timer.lap()
-            << " ms\n"
-            << std::defaultfloat;
+  CleanedMesh cleaned = load_for_command(mesh_path, all_components).cleaned;
 
   std::vector<MeshAnalysis> results;
   for (Mesh& component : cleaned.components) results.push_back(analyze_mesh(std::move(component), analysis));
