@@ -120,6 +120,39 @@ TEST(DijkstraSolver, ReuseGivesTheSameFieldsAsFreshRuns) {
   }
 }
 
+// A search restricted to one label equals the search on the graph whose
+// edges into other labels are cut (infinite length): labels here cut a torus
+// into bands so that paths inside one band must go the long way round.
+TEST(Dijkstra, LabelsRestrictTheSearchToOneRegion) {
+  const MeshGraph g = build_mesh_graph(make_torus(16, 6));
+  std::vector<Index> labels(static_cast<std::size_t>(g.num_vertices()));
+  for (Index v = 0; v < g.num_vertices(); ++v) labels[v] = (v / 6) % 5 == 0 ? 1 : (v % 6 < 3 ? 2 : 3);
+  MeshGraph cut = g;
+  for (Index v = 0; v < g.num_vertices(); ++v)
+    for (Index i = g.offset[v]; i < g.offset[v + 1]; ++i)
+      if (labels[g.neighbor[i]] != labels[v]) cut.length[i] = kInf;
+  const auto oracle = floyd_warshall(cut);
+  DijkstraSolver solver(g);
+  DijkstraOptions options;
+  options.labels = &labels;
+  for (Index s = 0; s < g.num_vertices(); s += 5) {
+    options.label = labels[s];
+    const DistanceField& f = solver.run({s}, options);
+    Index inside = 0;
+    for (Index v = 0; v < g.num_vertices(); ++v) {
+      if (oracle[s][v] == kInf || labels[v] != labels[s]) EXPECT_EQ(f.distance[v], kInf) << s << " -> " << v;
+      else EXPECT_NEAR(f.distance[v], oracle[s][v], 1e-12) << s << " -> " << v;
+      inside += f.distance[v] < kInf ? 1 : 0;
+    }
+    EXPECT_EQ(f.reached, inside);
+  }
+  options.label = 2;
+  EXPECT_THROW(solver.run({0}, options), InvalidArgument);  // vertex 0 has label 1
+  const std::vector<Index> too_few(3, 1);
+  options.labels = &too_few;
+  EXPECT_THROW(solver.run({0}, options), InvalidArgument);
+}
+
 TEST(Dijkstra, RejectsSourcesOutOfRange) {
   const MeshGraph g = build_mesh_graph(make_cube());
   EXPECT_THROW(dijkstra(g, 8), InvalidArgument);

@@ -66,11 +66,19 @@ const DistanceField& DijkstraSolver::run(const std::vector<Index>& sources, cons
     }
     return top;
   };
+  const Index* labels = options.labels ? options.labels->data() : nullptr;
+  if (labels && options.labels->size() != static_cast<std::size_t>(n))
+    throw InvalidArgument("dijkstra: " + std::to_string(options.labels->size()) + " vertex labels for " +
+                          std::to_string(n) + " vertices");
   for (std::size_t s = 0; s < sources.size(); ++s) {
     const Index v = sources[s];
     if (v < 0 || v >= n)
       throw InvalidArgument("dijkstra: source vertex " + std::to_string(v) + " out of range [0, " +
                             std::to_string(n) + ")");
+    if (labels && labels[v] != options.label)
+      throw InvalidArgument("dijkstra: source vertex " + std::to_string(v) + " has label " +
+                            std::to_string(labels[v]) + ", the search is restricted to label " +
+                            std::to_string(options.label));
     if (nearest[v] != kInvalidIndex) continue;  // listed twice
     dist[v] = 0.0;
     nearest[v] = static_cast<Index>(s);
@@ -92,6 +100,7 @@ const DistanceField& DijkstraSolver::run(const std::vector<Index>& sources, cons
     }
     for (Index i = offset[v]; i < offset[v + 1]; ++i) {
       const Index w = neighbor[i];
+      if (labels && labels[w] != options.label) continue;
       const double dw = d + length[i];
       if (dw < dist[w] && dw <= options.radius) {
         if (dist[w] == std::numeric_limits<double>::infinity()) touched_.push_back(w);

@@ -14,6 +14,12 @@ struct DijkstraOptions {
   /// Vertices farther than this from every source are left unreached
   /// (distance +inf): the search stops at the radius. +inf = whole mesh.
   double radius = std::numeric_limits<double>::infinity();
+  /// Restricts the search to the vertices v with (*labels)[v] == label (one
+  /// region of a segmentation, e.g. ReebGraph::vertex_node): paths never
+  /// leave them and the others stay unreached. nullptr (default): every
+  /// vertex. Holds #V labels; every source must carry `label`.
+  const std::vector<Index>* labels = nullptr;
+  Index label = 0;
 };
 
 /// Result of a (multi-source) Dijkstra pass.
