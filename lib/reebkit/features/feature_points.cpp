@@ -5,6 +5,7 @@
 #include "reebkit/geodesic/dijkstra.h"
 
 #include <algorithm>
+#include <limits>
 #include <string>
 #include <tuple>
 
@@ -77,19 +78,21 @@ FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOption
   // start vertex changes the result only where it finds a longer diameter.
   DiameterEnds ends = find_diameter_ends(solver, kCanonicalSeed, options.max_extra_sweeps);
   int passes = ends.passes;
+  // Farthest-point seeds: the vertex farthest from every diameter end found
+  // so far, from the distance fields the sweeps already computed.
+  std::vector<double> to_ends(static_cast<std::size_t>(n), std::numeric_limits<double>::infinity());
+  const auto add_ends = [&](const DiameterEnds& e) {
+    for (std::size_t v = 0; v < to_ends.size(); ++v) to_ends[v] = std::min({to_ends[v], e.f1[v], e.f2[v]});
+  };
   const auto consider = [&](Index seed) {
     DiameterEnds other = find_diameter_ends(solver, seed, options.max_extra_sweeps);
     passes += other.passes;
+    add_ends(other);
     if (other.longer_than(ends)) ends = std::move(other);
   };
-  // Farthest-point seeds: the vertex farthest from every end found so far.
-  std::vector<Index> found = {ends.s1, ends.s2};
-  for (int k = 0; k < options.extra_seeds; ++k) {
-    const Index seed = solver.run(found).farthest;
-    ++passes;
-    consider(seed);
-    found.push_back(seed);
-  }
+  add_ends(ends);
+  for (int k = 0; k < options.extra_seeds; ++k)  // max_element: ties go to the smallest id
+    consider(static_cast<Index>(std::max_element(to_ends.begin(), to_ends.end()) - to_ends.begin()));
   if (options.start_vertex != kCanonicalSeed) consider(options.start_vertex);
   out.sweeps = passes;
   const Index s1 = ends.s1, s2 = ends.s2;
