@@ -2,47 +2,16 @@
 // Markdown table: per class the min / median / max count and every count.
 //
 //   build/experiments/feature_counts ../shared/.../shrec07_watertight.cla MESH_DIR > results/shrec07_feature_counts.md
+#include "reebkit/collection/psb_classes.h"
 #include "reebkit/core/timer.h"
 #include "reebkit/features/feature_points.h"
 #include "reebkit/mesh/load_mesh.h"
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
-
-namespace {
-
-struct MeshClass {
-  std::string name;
-  std::vector<std::string> models;
-};
-
-// PSB .cla: "PSB 1", "<classes> <models>", then per class "<name> <parent>
-// <count>" followed by <count> model ids.
-std::vector<MeshClass> read_cla(const std::string& path) {
-  std::ifstream in(path);
-  std::string magic;
-  int version = 0, classes = 0, models = 0;
-  if (!(in >> magic >> version >> classes >> models) || magic != "PSB")
-    throw std::runtime_error(path + ": not a PSB .cla file");
-  std::vector<MeshClass> out;
-  for (int c = 0; c < classes; ++c) {
-    MeshClass mc;
-    std::string parent;
-    int count = 0;
-    if (!(in >> mc.name >> parent >> count)) throw std::runtime_error(path + ": truncated class header");
-    mc.models.resize(static_cast<std::size_t>(count));
-    for (auto& m : mc.models)
-      if (!(in >> m)) throw std::runtime_error(path + ": truncated model list of class " + mc.name);
-    out.push_back(std::move(mc));
-  }
-  return out;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   if (argc != 3) {
@@ -50,7 +19,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    const auto classes = read_cla(argv[1]);
+    const auto classes = reebkit::read_psb_classes(argv[1]);
     reebkit::Timer timer;
     std::cout << "| class | min | median | max | feature points per mesh |\n|---|---:|---:|---:|---|\n";
     for (const auto& c : classes) {
