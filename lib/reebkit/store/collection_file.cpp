@@ -1,0 +1,671 @@
+// The HDF5 collection file: flat, extendible datasets with CSR offsets
+// (README, "The collection file").
+//
+// Crash consistency. The file is written in HDF5's single-writer /
+// multiple-reader (SWMR) mode (HDF5 >= 1.10, latest file format): the library
+// orders its metadata writes so that the file on disk is always a coherent
+// HDF5 file, whatever moment the writer process dies at. On top of that,
+// reebkit commits entries in two phases:
+//   1. append the rows of every dataset, H5Fflush, fsync;
+//   2. write the entry count into the one-element dataset `count`, H5Fflush,
+//      fsync.
+// Readers trust only the first `count` entries (and the offsets up to them),
+// so rows written after the last commit are ignored. Freed file space is
+// never reused (file space strategy NONE): a chunk that is rewritten because
+// rows were added to it moves to a new address, and the old copy, which the
+// last commit still refers to, stays intact until the file is closed. A
+// crashed file keeps SWMR's "open for writing" mark in its superblock: HDF5
+// then opens it for reading only in SWMR read mode (CollectionReader falls
+// back to it; h5py: swmr=True), and resume rewrites the committed entries
+// into a fresh file (temp file + rename), which also drops the rows past
+// `count` and the space wasted by moved chunks.
+#include "reebkit/store/collection_file.h"
+
+#include "reebkit/core/error.h"
+
+#include <H5Cpp.h>
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <limits>
+#include <unordered_map>
+
+namespace reebkit {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::array<const char*, kNodeColumnCount> kNodeColumnNames = {"type", "end", "birth_vertex",
+                                                                        "vertex_count"};
+constexpr std::array<const char*, kGeomColumnCount> kGeomColumnNames = {
+    "area", "fq_min", "fq_max", "barycenter_x", "barycenter_y", "barycenter_z"};
+constexpr std::array<const char*, kTimeColumnCount> kTimeColumnNames = {
+    "load_ms", "graph_ms", "features_ms", "quotient_ms", "reeb_ms", "attributes_ms"};
+constexpr std::array<const char*, 2> kEdgeColumnNames = {"earlier_node", "later_node"};
+constexpr std::array<const char*, 3> kPointColumnNames = {"x", "y", "z"};
+
+/// Uncompressed bytes per chunk: small enough that rewriting the last,
+/// partly filled chunk of every dataset at each commit stays cheap.
+constexpr hsize_t kChunkBytes = 16 * 1024;
+constexpr int kDeflateLevel = 4;
+/// Buffered entries written to the datasets (without committing them) when
+/// this many are pending, so that memory stays bounded between checkpoints.
+constexpr std::size_t kBatchEntries = 256;
+
+H5::StrType utf8_string_type() {
+  H5::StrType type(H5::PredType::C_S1, H5T_VARIABLE);
+  type.setCset(H5T_CSET_UTF8);
+  return type;
+}
+
+[[noreturn]] void fail(const fs::path& path, const std::string& problem) {
+  throw Error(path.string() + ": " + problem);
+}
+
+/// Runs `body`, turning HDF5's exceptions into an Error naming the file.
+template <typename Body>
+auto guarded(const fs::path& path, const char* doing, Body&& body) {
+  try {
+    return body();
+  } catch (const H5::Exception& e) {
+    fail(path, std::string(doing) + ": HDF5: " + e.getFuncName() + ": " + e.getDetailMsg());
+  }
+}
+
+/// One extendible dataset of `width` columns (width 0: one-dimensional).
+struct Table {
+  H5::DataSet dataset;
+  H5::DataType type;
+  hsize_t width = 0;
+  hsize_t rows = 0;
+
+  int rank() const { return width == 0 ? 1 : 2; }
+  hsize_t columns() const { return std::max<hsize_t>(width, 1); }
+
+  /// Appends `n` rows from `data` (row-major).
+  void append(const void* data, hsize_t n) {
+    if (n == 0) return;
+    const hsize_t new_rows = rows + n;
+    const hsize_t extent[2] = {new_rows, width};
+    dataset.extend(extent);
+    H5::DataSpace file_space = dataset.getSpace();
+    const hsize_t start[2] = {rows, 0};
+    const hsize_t count[2] = {n, width};
+    file_space.selectHyperslab(H5S_SELECT_SET, count, start);
+    const H5::DataSpace memory_space(rank(), count);
+    dataset.write(data, type, memory_space, file_space);
+    rows = new_rows;
+  }
+
+  /// Reads rows [first, first + n) into `out` (row-major).
+  void read(void* out, hsize_t first, hsize_t n) const {
+    if (n == 0) return;
+    H5::DataSpace file_space = dataset.getSpace();
+    const hsize_t start[2] = {first, 0};
+    const hsize_t count[2] = {n, width};
+    file_space.selectHyperslab(H5S_SELECT_SET, count, start);
+    const H5::DataSpace memory_space(rank(), count);
+    dataset.read(out, type, memory_space, file_space);
+  }
+
+  template <typename T>
+  std::vector<T> read_vector(hsize_t first, hsize_t n) const {
+    std::vector<T> out(static_cast<std::size_t>(n * columns()));
+    read(out.data(), first, n);
+    return out;
+  }
+
+  std::vector<std::string> read_strings(hsize_t first, hsize_t n) const {
+    if (n == 0) return {};
+    std::vector<char*> raw(static_cast<std::size_t>(n), nullptr);
+    read(raw.data(), first, n);
+    std::vector<std::string> out(raw.begin(), raw.end());
+    const hsize_t count[1] = {n};
+    H5::DataSet::vlenReclaim(raw.data(), type, H5::DataSpace(1, count));
+    return out;
+  }
+};
+
+void write_string_attribute(H5::H5Object& object, const char* name, const std::string& value) {
+  const H5::StrType type = utf8_string_type();
+  H5::Attribute attribute = object.createAttribute(name, type, H5::DataSpace(H5S_SCALAR));
+  const char* text = value.c_str();
+  attribute.write(type, &text);
+}
+
+std::string read_string_attribute(const H5::H5Object& object, const char* name) {
+  if (!object.attrExists(name)) return {};
+  const H5::Attribute attribute = object.openAttribute(name);
+  std::string value;
+  attribute.read(attribute.getStrType(), value);
+  return value;
+}
+
+template <std::size_t N>
+void write_columns_attribute(H5::DataSet& dataset, const std::array<const char*, N>& names) {
+  const H5::StrType type = utf8_string_type();
+  const hsize_t dims[1] = {N};
+  H5::Attribute attribute = dataset.createAttribute("columns", type, H5::DataSpace(1, dims));
+  attribute.write(type, names.data());
+}
+
+std::string utc_now() {
+  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return text;
+}
+
+/// Every dataset of the layout, by role.
+struct Tables {
+  // per mesh (G rows)
+  Table name, class_label, error, content_hash, vertices, faces, status, timings, signature;
+  // G + 1 rows
+  Table node_offset, edge_offset, feature_offset;
+  // per node (N rows; skeleton_offset N + 1)
+  Table nodes, node_geometry, node_attr, skeleton_offset;
+  Table skeleton_points, edges, edge_attr, feature_points;
+  /// The number of committed entries: one int64, contiguous, so that a
+  /// commit is one 8-byte write in place.
+  H5::DataSet count;
+};
+
+/// The name, element type and width of each dataset, in Tables order.
+struct TableSpec {
+  Table Tables::*member;
+  const char* name;
+  H5::DataType type;
+  hsize_t width;
+};
+
+std::vector<TableSpec> table_specs() {
+  const H5::PredType& i8 = H5::PredType::NATIVE_INT8;
+  const H5::PredType& i32 = H5::PredType::NATIVE_INT32;
+  const H5::PredType& i64 = H5::PredType::NATIVE_INT64;
+  const H5::PredType& u64 = H5::PredType::NATIVE_UINT64;
+  const H5::PredType& f64 = H5::PredType::NATIVE_DOUBLE;
+  const H5::StrType str = utf8_string_type();
+  return {
+      {&Tables::name, "name", str, 0},
+      {&Tables::class_label, "class", str, 0},
+      {&Tables::error, "error", str, 0},
+      {&Tables::content_hash, "content_hash", u64, 0},
+      {&Tables::vertices, "vertices", i64, 0},
+      {&Tables::faces, "faces", i64, 0},
+      {&Tables::status, "status", i8, 0},
+      {&Tables::timings, "timings", f64, kTimeColumnCount},
+      {&Tables::signature, "signature", f64, kSignatureLength},
+      {&Tables::node_offset, "node_offset", i64, 0},
+      {&Tables::edge_offset, "edge_offset", i64, 0},
+      {&Tables::feature_offset, "feature_offset", i64, 0},
+      {&Tables::nodes, "nodes", i32, kNodeColumnCount},
+      {&Tables::node_geometry, "node_geometry", f64, kGeomColumnCount},
+      {&Tables::node_attr, "node_attr", f64, kNodeAttributeCount},
+      {&Tables::skeleton_offset, "skeleton_offset", i64, 0},
+      {&Tables::skeleton_points, "skeleton_points", f64, 3},
+      {&Tables::edges, "edges", i32, 2},
+      {&Tables::edge_attr, "edge_attr", f64, kEdgeAttributeCount},
+      {&Tables::feature_points, "feature_points", i32, 0},
+  };
+}
+
+void set_columns(Tables& t) {
+  write_columns_attribute(t.timings.dataset, kTimeColumnNames);
+  write_columns_attribute(t.signature.dataset, kSignatureNames);
+  write_columns_attribute(t.nodes.dataset, kNodeColumnNames);
+  write_columns_attribute(t.node_geometry.dataset, kGeomColumnNames);
+  write_columns_attribute(t.node_attr.dataset, kNodeAttributeNames);
+  write_columns_attribute(t.skeleton_points.dataset, kPointColumnNames);
+  write_columns_attribute(t.edges.dataset, kEdgeColumnNames);
+  write_columns_attribute(t.edge_attr.dataset, kEdgeAttributeNames);
+}
+
+/// Opens every dataset of `file` (reading, or appending after the rows it has).
+Tables open_tables(const H5::H5File& file) {
+  Tables tables;
+  for (const TableSpec& spec : table_specs()) {
+    Table& t = tables.*spec.member;
+    t.dataset = file.openDataSet(spec.name);
+    t.type = spec.type;
+    t.width = spec.width;
+    hsize_t dims[2] = {0, 0};
+    const H5::DataSpace space = t.dataset.getSpace();
+    if (space.getSimpleExtentNdims() != t.rank()) throw H5::DataSetIException("open", "unexpected rank");
+    space.getSimpleExtentDims(dims);
+    if (t.width != 0 && dims[1] != t.width) throw H5::DataSetIException("open", "unexpected column count");
+    t.rows = dims[0];
+  }
+  tables.count = file.openDataSet("count");
+  return tables;
+}
+
+/// Entries buffered since the last write, as the rows they add to each dataset.
+struct Batch {
+  std::vector<std::string> name, class_label, error;
+  std::vector<std::uint64_t> content_hash;
+  std::vector<std::int64_t> vertices, faces;
+  std::vector<std::int8_t> status;
+  std::vector<double> timings, signature;
+  std::vector<std::int64_t> node_offset, edge_offset, feature_offset, skeleton_offset;
+  std::vector<std::int32_t> nodes, edges, feature_points;
+  std::vector<double> node_geometry, node_attr, edge_attr, skeleton_points;
+};
+
+template <typename T>
+void append_to(std::vector<T>& out, const std::vector<T>& rows) {
+  out.insert(out.end(), rows.begin(), rows.end());
+}
+
+void append_strings(Table& table, const std::vector<std::string>& strings) {
+  std::vector<const char*> raw;
+  raw.reserve(strings.size());
+  for (const std::string& s : strings) raw.push_back(s.c_str());
+  table.append(raw.data(), raw.size());
+}
+
+template <typename T>
+void append_rows(Table& table, const std::vector<T>& values) {
+  table.append(values.data(), values.size() / table.columns());
+}
+
+void check_entry(const CollectionEntry& e, const fs::path& path) {
+  const std::size_t n = static_cast<std::size_t>(e.num_nodes());
+  const std::size_t m = static_cast<std::size_t>(e.num_edges());
+  const auto expect = [&](bool ok, const char* what) {
+    if (!ok) throw InvalidArgument(path.string() + ": entry '" + e.name + "': " + what);
+  };
+  expect(e.nodes.size() % kNodeColumnCount == 0 && e.edges.size() % 2 == 0, "nodes or edges not whole rows");
+  expect(e.node_geometry.size() == n * kGeomColumnCount, "node_geometry is not #nodes x kGeomColumnCount");
+  expect(e.node_attributes.size() == n * kNodeAttributeCount, "node_attributes is not #nodes x kNodeAttributeCount");
+  expect(e.edge_attributes.size() == m * kEdgeAttributeCount, "edge_attributes is not #edges x kEdgeAttributeCount");
+  expect(e.skeleton_offset.empty() || e.skeleton_offset.size() == n + 1, "skeleton_offset is not #nodes + 1");
+  expect(e.skeleton_offset.empty() || e.skeleton_offset.front() == 0, "skeleton_offset does not start at 0");
+  expect(std::is_sorted(e.skeleton_offset.begin(), e.skeleton_offset.end()), "skeleton_offset decreases");
+  const std::size_t points = e.skeleton_offset.empty() ? 0 : static_cast<std::size_t>(e.skeleton_offset.back());
+  expect(e.skeleton_points.size() == 3 * points, "skeleton_points is not 3 x skeleton_offset.back()");
+  expect(e.signature.empty() || e.signature.size() == kSignatureLength, "signature is not kSignatureLength long");
+  for (const std::int32_t id : e.edges)
+    expect(id >= 0 && static_cast<std::size_t>(id) < n, "edge names a node out of range");
+}
+
+int vfd_descriptor(const H5::H5File& file) {
+  void* handle = nullptr;
+  if (H5Fget_vfd_handle(file.getId(), H5P_DEFAULT, &handle) < 0 || handle == nullptr)
+    throw H5::FileIException("H5Fget_vfd_handle", "no file descriptor");
+  return *static_cast<int*>(handle);
+}
+
+/// Flushes HDF5's caches to the file and the file to the disk.
+void flush_to_disk(const H5::H5File& file, const fs::path& path) {
+  file.flush(H5F_SCOPE_LOCAL);
+  if (::fsync(vfd_descriptor(file)) != 0) fail(path, "fsync failed");
+}
+
+/// The committed part of a collection file: per-mesh columns and offsets.
+struct Snapshot {
+  std::int64_t size = 0;
+  std::vector<std::string> names, class_labels;
+  std::vector<std::uint64_t> hashes;
+  std::vector<double> signatures;
+  std::vector<std::int64_t> node_offset, edge_offset, feature_offset;
+  Provenance provenance;
+};
+
+H5::H5File open_for_reading(const fs::path& path) {
+  if (!fs::exists(path)) fail(path, "no such file");
+  if (H5Fis_hdf5(path.c_str()) <= 0) fail(path, "not an HDF5 file");
+  try {
+    return H5::H5File(path.string(), H5F_ACC_RDONLY);
+  } catch (const H5::Exception&) {
+    // A writer died with the file open: the superblock still says so, and
+    // HDF5 opens such a file only in SWMR read mode (see the top of the file).
+  }
+  return guarded(path, "opening", [&] { return H5::H5File(path.string(), H5F_ACC_RDONLY | H5F_ACC_SWMR_READ); });
+}
+
+int layout_version(const H5::H5File& file) {
+  if (!file.attrExists("layout")) return -1;
+  int version = -1;
+  file.openAttribute("layout").read(H5::PredType::NATIVE_INT, &version);
+  return version;
+}
+
+Snapshot read_snapshot(const H5::H5File& file, const Tables& t) {
+  Snapshot s;
+  t.count.read(&s.size, H5::PredType::NATIVE_INT64);
+  const auto g = static_cast<hsize_t>(s.size);
+  s.names = t.name.read_strings(0, g);
+  s.class_labels = t.class_label.read_strings(0, g);
+  s.hashes = t.content_hash.read_vector<std::uint64_t>(0, g);
+  s.signatures = t.signature.read_vector<double>(0, g);
+  s.node_offset = t.node_offset.read_vector<std::int64_t>(0, g + 1);
+  s.edge_offset = t.edge_offset.read_vector<std::int64_t>(0, g + 1);
+  s.feature_offset = t.feature_offset.read_vector<std::int64_t>(0, g + 1);
+  s.provenance.reebkit_version = read_string_attribute(file, "reebkit_version");
+  s.provenance.options = read_string_attribute(file, "options");
+  s.provenance.command = read_string_attribute(file, "command");
+  s.provenance.created = read_string_attribute(file, "created");
+  return s;
+}
+
+/// An open collection file, checked, and its committed part.
+struct OpenCollection {
+  H5::H5File file;
+  Tables tables;
+  Snapshot snapshot;
+};
+
+OpenCollection open_collection(const fs::path& path) {
+  OpenCollection c;
+  c.file = open_for_reading(path);
+  const int version = guarded(path, "reading the layout", [&] { return layout_version(c.file); });
+  if (version != kCollectionLayoutVersion)
+    fail(path, version < 0 ? "not a reebkit collection file (no `layout` attribute)"
+                           : "collection layout version " + std::to_string(version) + ", this reebkit reads " +
+                                 std::to_string(kCollectionLayoutVersion));
+  guarded(path, "reading", [&] {
+    c.tables = open_tables(c.file);
+    c.snapshot = read_snapshot(c.file, c.tables);
+  });
+  return c;
+}
+
+/// Entries [first, first + n) read with one call per dataset.
+std::vector<CollectionEntry> read_entries(const Tables& t, const Snapshot& s, std::int64_t first, std::int64_t n) {
+  const auto f = static_cast<hsize_t>(first);
+  const auto count = static_cast<hsize_t>(n);
+  const auto node0 = s.node_offset[first], node1 = s.node_offset[first + n];
+  const auto edge0 = s.edge_offset[first], edge1 = s.edge_offset[first + n];
+  const auto feat0 = s.feature_offset[first], feat1 = s.feature_offset[first + n];
+  const auto names = t.name.read_strings(f, count);
+  const auto labels = t.class_label.read_strings(f, count);
+  const auto errors = t.error.read_strings(f, count);
+  const auto hashes = t.content_hash.read_vector<std::uint64_t>(f, count);
+  const auto vertices = t.vertices.read_vector<std::int64_t>(f, count);
+  const auto faces = t.faces.read_vector<std::int64_t>(f, count);
+  const auto status = t.status.read_vector<std::int8_t>(f, count);
+  const auto timings = t.timings.read_vector<double>(f, count);
+  const auto nodes = t.nodes.read_vector<std::int32_t>(node0, node1 - node0);
+  const auto geometry = t.node_geometry.read_vector<double>(node0, node1 - node0);
+  const auto node_attr = t.node_attr.read_vector<double>(node0, node1 - node0);
+  const auto skeleton_offset = t.skeleton_offset.read_vector<std::int64_t>(node0, node1 - node0 + 1);
+  const auto point0 = skeleton_offset.front();
+  const auto points = t.skeleton_points.read_vector<double>(point0, skeleton_offset.back() - point0);
+  const auto edges = t.edges.read_vector<std::int32_t>(edge0, edge1 - edge0);
+  const auto edge_attr = t.edge_attr.read_vector<double>(edge0, edge1 - edge0);
+  const auto features = t.feature_points.read_vector<std::int32_t>(feat0, feat1 - feat0);
+
+  // Rows [a, b) of a row-major array of `width` columns starting at row `base`.
+  const auto slice = [](const auto& v, std::int64_t base, std::int64_t a, std::int64_t b, std::int64_t width) {
+    using Vector = std::decay_t<decltype(v)>;
+    return Vector(v.begin() + (a - base) * width, v.begin() + (b - base) * width);
+  };
+  std::vector<CollectionEntry> out(static_cast<std::size_t>(n));
+  for (std::int64_t k = 0; k < n; ++k) {
+    const std::int64_t i = first + k;
+    CollectionEntry& e = out[static_cast<std::size_t>(k)];
+    const auto sk = static_cast<std::size_t>(k);
+    e.name = names[sk];
+    e.class_label = labels[sk];
+    e.error = errors[sk];
+    e.content_hash = hashes[sk];
+    e.vertices = vertices[sk];
+    e.faces = faces[sk];
+    e.ok = status[sk] == 0;
+    std::copy_n(timings.begin() + k * kTimeColumnCount, kTimeColumnCount, e.timings.begin());
+    e.signature = slice(s.signatures, 0, i, i + 1, kSignatureLength);
+    const auto n0 = s.node_offset[i], n1 = s.node_offset[i + 1];
+    e.nodes = slice(nodes, node0, n0, n1, kNodeColumnCount);
+    e.node_geometry = slice(geometry, node0, n0, n1, kGeomColumnCount);
+    e.node_attributes = slice(node_attr, node0, n0, n1, kNodeAttributeCount);
+    e.skeleton_offset = slice(skeleton_offset, node0, n0, n1 + 1, 1);
+    const std::int64_t local0 = e.skeleton_offset.front();
+    for (std::int64_t& o : e.skeleton_offset) o -= local0;
+    e.skeleton_points = slice(points, point0, local0, local0 + e.skeleton_offset.back(), 3);
+    const auto e0 = s.edge_offset[i], e1 = s.edge_offset[i + 1];
+    e.edges = slice(edges, edge0, e0, e1, 2);
+    e.edge_attributes = slice(edge_attr, edge0, e0, e1, kEdgeAttributeCount);
+    e.feature_points = slice(features, feat0, s.feature_offset[i], s.feature_offset[i + 1], 1);
+  }
+  return out;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------
+// Reader
+
+struct CollectionReader::Impl : OpenCollection {
+  fs::path path;
+  std::unordered_map<std::string, std::int64_t> by_name;
+};
+
+CollectionReader::CollectionReader(const fs::path& path) : impl_(std::make_unique<Impl>()) {
+  H5::Exception::dontPrint();
+  impl_->path = path;
+  static_cast<OpenCollection&>(*impl_) = open_collection(path);
+  for (std::int64_t i = 0; i < impl_->snapshot.size; ++i)
+    impl_->by_name.emplace(impl_->snapshot.names[static_cast<std::size_t>(i)], i);
+}
+
+CollectionReader::~CollectionReader() = default;
+CollectionReader::CollectionReader(CollectionReader&&) noexcept = default;
+
+std::int64_t CollectionReader::size() const { return impl_->snapshot.size; }
+const std::vector<std::string>& CollectionReader::names() const { return impl_->snapshot.names; }
+const std::vector<std::string>& CollectionReader::class_labels() const { return impl_->snapshot.class_labels; }
+const std::vector<double>& CollectionReader::signatures() const { return impl_->snapshot.signatures; }
+const Provenance& CollectionReader::provenance() const { return impl_->snapshot.provenance; }
+
+std::optional<std::int64_t> CollectionReader::find(const std::string& name) const {
+  const auto it = impl_->by_name.find(name);
+  if (it == impl_->by_name.end()) return std::nullopt;
+  return it->second;
+}
+
+CollectionEntry CollectionReader::entry(std::int64_t i) const {
+  if (i < 0 || i >= size())
+    throw InvalidArgument(impl_->path.string() + ": entry " + std::to_string(i) + " out of range (the file holds " +
+                          std::to_string(size()) + ")");
+  return guarded(impl_->path, "reading an entry",
+                 [&] { return std::move(read_entries(impl_->tables, impl_->snapshot, i, 1).front()); });
+}
+
+// ---------------------------------------------------------------------------
+// Writer
+
+struct CollectionWriter::Impl {
+  fs::path path;
+  H5::H5File file;
+  Tables tables;
+  Batch batch;
+  std::vector<std::pair<std::string, std::uint64_t>> existing;
+  std::int64_t written = 0;    // entries in the datasets
+  std::int64_t committed = 0;  // entries counted by `count`
+  std::int64_t buffered = 0;   // entries in `batch`
+  // running totals of the flat arrays, buffered rows included
+  std::int64_t nodes = 0, edges = 0, features = 0, points = 0;
+
+  void create(const fs::path& target, const Provenance& provenance);
+  void write_batch();
+  void commit();
+};
+
+void CollectionWriter::Impl::create(const fs::path& target, const Provenance& provenance) {
+  H5::FileCreatPropList create_list;
+  // Never reuse freed space: see the top of the file.
+  H5Pset_file_space_strategy(create_list.getId(), H5F_FSPACE_STRATEGY_NONE, false, 1);
+  H5::FileAccPropList access_list;
+  access_list.setLibverBounds(H5F_LIBVER_LATEST, H5F_LIBVER_LATEST);  // SWMR needs the 1.10 format
+  file = H5::H5File(target.string(), H5F_ACC_TRUNC, create_list, access_list);
+
+  const int layout = kCollectionLayoutVersion;
+  file.createAttribute("layout", H5::PredType::NATIVE_INT, H5::DataSpace(H5S_SCALAR))
+      .write(H5::PredType::NATIVE_INT, &layout);
+  write_string_attribute(file, "reebkit_version", provenance.reebkit_version);
+  write_string_attribute(file, "options", provenance.options);
+  write_string_attribute(file, "command", provenance.command);
+  write_string_attribute(file, "created", provenance.created.empty() ? utc_now() : provenance.created);
+
+  for (const TableSpec& spec : table_specs()) {
+    Table& t = tables.*spec.member;
+    t.type = spec.type;
+    t.width = spec.width;
+    const hsize_t dims[2] = {0, t.width};
+    const hsize_t max_dims[2] = {H5S_UNLIMITED, t.width};
+    const hsize_t row_bytes = t.columns() * t.type.getSize();
+    const hsize_t chunk[2] = {std::max<hsize_t>(1, kChunkBytes / row_bytes), t.width};
+    H5::DSetCreatPropList properties;
+    properties.setChunk(t.rank(), chunk);
+    properties.setShuffle();
+    properties.setDeflate(kDeflateLevel);
+    t.dataset = file.createDataSet(spec.name, t.type, H5::DataSpace(t.rank(), dims, max_dims), properties);
+  }
+  set_columns(tables);
+  const std::int64_t zero = 0;
+  for (Table* offsets : {&tables.node_offset, &tables.edge_offset, &tables.feature_offset, &tables.skeleton_offset})
+    offsets->append(&zero, 1);
+  const hsize_t one[1] = {1};
+  tables.count = file.createDataSet("count", H5::PredType::NATIVE_INT64, H5::DataSpace(1, one));
+  tables.count.write(&zero, H5::PredType::NATIVE_INT64);
+  if (H5Fstart_swmr_write(file.getId()) < 0) throw H5::FileIException("H5Fstart_swmr_write", "failed");
+}
+
+void CollectionWriter::Impl::write_batch() {
+  if (buffered == 0) return;
+  Batch& b = batch;
+  append_strings(tables.name, b.name);
+  append_strings(tables.class_label, b.class_label);
+  append_strings(tables.error, b.error);
+  append_rows(tables.content_hash, b.content_hash);
+  append_rows(tables.vertices, b.vertices);
+  append_rows(tables.faces, b.faces);
+  append_rows(tables.status, b.status);
+  append_rows(tables.timings, b.timings);
+  append_rows(tables.signature, b.signature);
+  append_rows(tables.node_offset, b.node_offset);
+  append_rows(tables.edge_offset, b.edge_offset);
+  append_rows(tables.feature_offset, b.feature_offset);
+  append_rows(tables.nodes, b.nodes);
+  append_rows(tables.node_geometry, b.node_geometry);
+  append_rows(tables.node_attr, b.node_attr);
+  append_rows(tables.skeleton_offset, b.skeleton_offset);
+  append_rows(tables.skeleton_points, b.skeleton_points);
+  append_rows(tables.edges, b.edges);
+  append_rows(tables.edge_attr, b.edge_attr);
+  append_rows(tables.feature_points, b.feature_points);
+  written += buffered;
+  buffered = 0;
+  b = Batch{};
+}
+
+void CollectionWriter::Impl::commit() {
+  write_batch();
+  if (written == committed) return;
+  flush_to_disk(file, path);  // phase 1: every row of the new entries
+  tables.count.write(&written, H5::PredType::NATIVE_INT64);
+  flush_to_disk(file, path);  // phase 2: the count that makes them visible
+  committed = written;
+}
+
+CollectionWriter::CollectionWriter(const fs::path& path, const Provenance& provenance, bool resume)
+    : impl_(std::make_unique<Impl>()) {
+  H5::Exception::dontPrint();
+  Impl& w = *impl_;
+  w.path = path;
+  if (!resume || !fs::exists(path)) {
+    guarded(path, "creating", [&] { w.create(path, provenance); });
+    return;
+  }
+  // Resume: copy the committed entries into a fresh file, then put it in place.
+  fs::path temporary = path;
+  temporary += ".resume-tmp";
+  {
+    const OpenCollection old = open_collection(path);
+    guarded(temporary, "creating", [&] { w.create(temporary, provenance); });
+    const std::int64_t n = old.snapshot.size;
+    for (std::int64_t first = 0; first < n; first += static_cast<std::int64_t>(kBatchEntries)) {
+      const std::int64_t count = std::min<std::int64_t>(static_cast<std::int64_t>(kBatchEntries), n - first);
+      auto entries = guarded(path, "reading", [&] { return read_entries(old.tables, old.snapshot, first, count); });
+      for (CollectionEntry& e : entries) {
+        w.existing.emplace_back(e.name, e.content_hash);
+        append(std::move(e));
+      }
+    }
+    guarded(temporary, "writing", [&] { w.commit(); });
+  }
+  std::error_code error;
+  fs::rename(temporary, path, error);
+  if (error) fail(path, "cannot replace it with " + temporary.string() + ": " + error.message());
+}
+
+CollectionWriter::~CollectionWriter() {
+  try {
+    close();
+  } catch (...) {
+    // documented: errors are swallowed here, close() reports them
+  }
+}
+
+const std::vector<std::pair<std::string, std::uint64_t>>& CollectionWriter::existing() const {
+  return impl_->existing;
+}
+
+std::int64_t CollectionWriter::size() const { return impl_->written + impl_->buffered; }
+
+void CollectionWriter::append(CollectionEntry entry) {
+  Impl& w = *impl_;
+  check_entry(entry, w.path);
+  Batch& b = w.batch;
+  const std::int64_t n = entry.num_nodes();
+  b.name.push_back(std::move(entry.name));
+  b.class_label.push_back(std::move(entry.class_label));
+  b.error.push_back(std::move(entry.error));
+  b.content_hash.push_back(entry.content_hash);
+  b.vertices.push_back(entry.vertices);
+  b.faces.push_back(entry.faces);
+  b.status.push_back(entry.ok ? 0 : 1);
+  b.timings.insert(b.timings.end(), entry.timings.begin(), entry.timings.end());
+  if (entry.signature.empty()) entry.signature.assign(kSignatureLength, std::numeric_limits<double>::quiet_NaN());
+  append_to(b.signature, entry.signature);
+  append_to(b.nodes, entry.nodes);
+  append_to(b.node_geometry, entry.node_geometry);
+  append_to(b.node_attr, entry.node_attributes);
+  append_to(b.edges, entry.edges);
+  append_to(b.edge_attr, entry.edge_attributes);
+  append_to(b.feature_points, entry.feature_points);
+  append_to(b.skeleton_points, entry.skeleton_points);
+  for (std::int64_t k = 1; k <= n; ++k)
+    b.skeleton_offset.push_back(
+        w.points + (entry.skeleton_offset.empty() ? 0 : entry.skeleton_offset[static_cast<std::size_t>(k)]));
+  w.points += static_cast<std::int64_t>(entry.skeleton_points.size() / 3);
+  w.nodes += n;
+  w.edges += entry.num_edges();
+  w.features += static_cast<std::int64_t>(entry.feature_points.size());
+  b.node_offset.push_back(w.nodes);
+  b.edge_offset.push_back(w.edges);
+  b.feature_offset.push_back(w.features);
+  if (++w.buffered >= static_cast<std::int64_t>(kBatchEntries)) guarded(w.path, "writing", [&] { w.write_batch(); });
+}
+
+void CollectionWriter::checkpoint() {
+  guarded(impl_->path, "writing", [&] { impl_->commit(); });
+}
+
+void CollectionWriter::close() {
+  Impl& w = *impl_;
+  if (w.file.getId() == H5I_INVALID_HID) return;
+  checkpoint();
+  guarded(w.path, "closing", [&] {
+    w.tables = Tables{};
+    w.file.close();
+  });
+}
+
+}  // namespace reebkit
