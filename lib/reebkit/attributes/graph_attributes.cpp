@@ -1,0 +1,325 @@
+// Geometric attributes of the high level Reeb graph (Tierny et al. 2006,
+// section 5.3: "those graphs can be extended with geometrical attributes and
+// shape comparison can be achieved with graph matching algorithms").
+//
+// Choices (README, "Graph attributes"):
+// - Areas and vertex shares count the surface as read (original_surface):
+//   the fans fill_holes adds are left out. Geodesics, level lines and region
+//   borders run on the analyzed, hole-filled mesh, where level lines are
+//   closed curves, as f_q and the graph were computed there.
+// - Geodesic extent of a region: the eccentricity of its highest vertex
+//   (largest f_q, then largest id; a leaf's feature point), the largest
+//   shortest-path distance from it to a vertex of the region, paths kept to
+//   the region and its one-ring (DijkstraOptions::labels). For a leaf, the
+//   length of the protrusion from tip to attach loop, whatever its pose. A
+//   region absorbed in several pieces (a line living between two close
+//   events takes scattered vertices) gets its largest piece's value. One
+//   search per piece, about one Dijkstra pass over the mesh in all (a double
+//   sweep for the region's diameter would double the cost and depend on a
+//   local optimum). Divided by the diameter of the feature point search
+//   (FeaturePoints::diameter, section 4.1.2).
+// - Mean radius: the exact piecewise-linear isocontours f_q = c of the
+//   region at kLevels levels c_k = fq_min + (k + 1/2) span / kLevels; a
+//   triangle crossing c_k adds its segment times the share of its vertices in
+//   the region (one third per vertex, as ReebNode::area), so triangles on a
+//   region border are split between the regions like their area. The mean of
+//   length / (2 pi) over the levels, divided by sqrt(mesh area).
+// - Boundary length of an edge (a, b): the curve joining the midpoints of the
+//   mesh edges from a vertex of a to a vertex of b (through the centroid in a
+//   triangle with three regions), the discrete border between the two
+//   regions, divided by sqrt(mesh area). Zero when the regions do not touch
+//   (a node without vertices). Event f_q: f_q of the later node's birth
+//   vertex, v_t of the step where the two regions meet.
+#include "reebkit/attributes/graph_attributes.h"
+
+#include "reebkit/core/error.h"
+#include "reebkit/geodesic/dijkstra.h"
+#include "reebkit/mesh/hole_filling.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <string>
+
+namespace reebkit {
+
+const std::array<const char*, kNodeAttributeCount> kNodeAttributeNames = {
+    "relative_area", "fq_min",       "fq_max", "fq_span",    "geodesic_extent",
+    "mean_radius",   "vertex_share", "degree", "start_type", "end_type"};
+
+const std::array<const char*, kEdgeAttributeCount> kEdgeAttributeNames = {"boundary_length", "event_fq"};
+
+namespace {
+
+constexpr int kLevels = 8;           // level lines per region for kNodeMeanRadius
+constexpr int kSweeps = 1;           // Dijkstra runs per region piece for kNodeGeodesicExtent
+constexpr int kLeafSlots = 6;        // largest leaves listed in the signature
+constexpr int kAreaBins = 6;         // histogram of node relative areas
+constexpr int kEigenvalues = 8;      // normalized Laplacian eigenvalues 2 .. 9
+constexpr double kCountScale = 8.0;  // counts c enter as log2(1 + c) / 8 (1 at c = 255)
+
+// Signature layout (kSignatureNames lists the same order).
+constexpr int kSigCounts = 0;  // nodes, leaves, bifurcation starts, junction starts, cycles
+constexpr int kSigRootArea = 5;
+constexpr int kSigLeafArea = 6;
+constexpr int kSigLeafExtent = kSigLeafArea + kLeafSlots;
+constexpr int kSigAreaHistogram = kSigLeafExtent + kLeafSlots;
+constexpr int kSigEigenvalues = kSigAreaHistogram + kAreaBins;
+static_assert(kSigEigenvalues + kEigenvalues == kSignatureLength, "signature layout must fill kSignatureLength");
+
+/// Upper ends of the relative area bins but the last: half decades, so that
+/// finger tips (~1e-3) and torsos (> 0.1) land in different bins.
+constexpr std::array<double, kAreaBins - 1> kAreaBinEnds = {1e-3, 3.1622776601683795e-3, 1e-2,
+                                                            3.1622776601683795e-2, 1e-1};
+
+std::size_t at(Index i) { return static_cast<std::size_t>(i); }
+
+Vec3 point(const Mesh& mesh, Index v) { return mesh.vertices.row(v).transpose(); }
+
+/// Where f = c on the mesh edge (i, j), f(i) != f(j).
+Vec3 crossing(const Mesh& mesh, const std::vector<double>& f, Index i, Index j, double c) {
+  const double t = (c - f[at(i)]) / (f[at(j)] - f[at(i)]);
+  return point(mesh, i) + t * (point(mesh, j) - point(mesh, i));
+}
+
+/// Geodesic extent of every region (see the file comment), unnormalized.
+std::vector<double> geodesic_extents(const MeshGraph& graph, const std::vector<double>& f, const ReebGraph& reeb) {
+  const Index n = graph.num_vertices();
+  // Vertices grouped by region (counting sort), ascending ids within a region.
+  std::vector<Index> first(reeb.nodes.size() + 1, 0);
+  for (const Index node : reeb.vertex_node) ++first[at(node) + 1];
+  for (std::size_t k = 1; k < first.size(); ++k) first[k] += first[k - 1];
+  std::vector<Index> members(at(n));
+  std::vector<Index> fill(first.begin(), first.end() - 1);
+  for (Index v = 0; v < n; ++v) members[at(fill[at(reeb.vertex_node[at(v)])]++)] = v;
+
+  std::vector<double> extent(reeb.nodes.size(), 0.0);
+  std::vector<std::uint8_t> done(at(n), 0);
+  // stamp[v] == node: v is in the region of node or next to it, where the
+  // searches for node may go.
+  std::vector<Index> stamp(at(n), kInvalidIndex);
+  std::vector<Index> source(1);
+  DijkstraSolver solver(graph);
+  DijkstraOptions options;
+  options.labels = &stamp;
+  for (Index node = 0; node < reeb.num_nodes(); ++node) {
+    options.label = node;
+    const Index* begin = members.data() + first[at(node)];
+    const Index* end = members.data() + first[at(node) + 1];
+    for (const Index* v = begin; v != end; ++v) {
+      stamp[at(*v)] = node;
+      for (Index i = graph.offset[at(*v)]; i < graph.offset[at(*v) + 1]; ++i) stamp[at(graph.neighbor[at(i)])] = node;
+    }
+    while (true) {
+      // A piece of the region not measured yet, from its highest vertex.
+      source[0] = kInvalidIndex;
+      for (const Index* v = begin; v != end; ++v)
+        if (!done[at(*v)] && (source[0] == kInvalidIndex || f[at(*v)] >= f[at(source[0])])) source[0] = *v;
+      if (source[0] == kInvalidIndex) break;
+      const DistanceField& field = solver.run(source, options);
+      // Vertices settle by distance: the last region vertex is the farthest.
+      const auto& settled = solver.settled();
+      const auto far = std::find_if(settled.rbegin(), settled.rend(),
+                                    [&](Index w) { return reeb.vertex_node[at(w)] == node; });
+      extent[at(node)] = std::max(extent[at(node)], field.distance[at(*far)]);
+      for (const Index w : settled)
+        if (reeb.vertex_node[at(w)] == node) done[at(w)] = 1;
+    }
+  }
+  return extent;
+}
+
+/// What one pass over the triangles gathers (see the file comment).
+struct TriangleSums {
+  std::vector<double> node_area;      ///< per node, over the surface as read
+  double total_area = 0.0;            ///< of the surface as read
+  std::vector<double> level_length;   ///< isocontour lengths, #nodes x kLevels, row-major
+  std::vector<double> border_length;  ///< per graph edge
+};
+
+TriangleSums triangle_sums(const Mesh& mesh, Index original_vertices, const std::vector<double>& f,
+                           const ReebGraph& reeb) {
+  TriangleSums sums;
+  sums.node_area.assign(reeb.nodes.size(), 0.0);
+  sums.level_length.assign(reeb.nodes.size() * kLevels, 0.0);
+  sums.border_length.assign(reeb.edges.size(), 0.0);
+  const auto add_border = [&](Index a, Index b, double length) {
+    const std::array<Index, 2> key = {std::min(a, b), std::max(a, b)};
+    const auto it = std::lower_bound(reeb.edges.begin(), reeb.edges.end(), key);
+    if (it != reeb.edges.end() && *it == key) sums.border_length[static_cast<std::size_t>(it - reeb.edges.begin())] += length;
+  };
+  for (Index t = 0; t < mesh.num_triangles(); ++t) {
+    const std::array<Index, 3> v = {mesh.triangles(t, 0), mesh.triangles(t, 1), mesh.triangles(t, 2)};
+    const std::array<Index, 3> label = {reeb.vertex_node[at(v[0])], reeb.vertex_node[at(v[1])],
+                                        reeb.vertex_node[at(v[2])]};
+    if (v[0] < original_vertices && v[1] < original_vertices && v[2] < original_vertices) {  // not a hole fan
+      const double area =
+          0.5 * (point(mesh, v[1]) - point(mesh, v[0])).cross(point(mesh, v[2]) - point(mesh, v[0])).norm();
+      sums.total_area += area;
+      for (const Index node : label) sums.node_area[at(node)] += area / 3.0;
+    }
+    const double lo = std::min({f[at(v[0])], f[at(v[1])], f[at(v[2])]});
+    const double hi = std::max({f[at(v[0])], f[at(v[1])], f[at(v[2])]});
+
+    // Level lines: each region present in the triangle, at its levels in [lo, hi).
+    for (int i = 0; i < 3; ++i) {
+      const Index node = label[at(i)];
+      if ((i > 0 && node == label[0]) || (i > 1 && node == label[1])) continue;  // counted already
+      const ReebNode& region = reeb.nodes[at(node)];
+      const double step = (region.fq_max - region.fq_min) / kLevels;
+      if (!(step > 0.0) || hi <= lo) continue;
+      const double share = static_cast<double>(std::count(label.begin(), label.end(), node)) / 3.0;
+      const int k_lo = std::max(0, static_cast<int>(std::floor((lo - region.fq_min) / step - 0.5)));
+      const int k_hi = std::min(kLevels - 1, static_cast<int>(std::ceil((hi - region.fq_min) / step - 0.5)));
+      for (int k = k_lo; k <= k_hi; ++k) {
+        const double c = region.fq_min + (k + 0.5) * step;
+        if (!(lo <= c && c < hi)) continue;  // a vertex with f = c counts as below c
+        // The vertex alone on its side of c, and the other two.
+        const bool above0 = f[at(v[0])] > c, above1 = f[at(v[1])] > c;
+        const int lone = above0 == above1 ? 2 : (above0 == (f[at(v[2])] > c) ? 1 : 0);
+        const Index a = v[at(lone)], b = v[at((lone + 1) % 3)], d = v[at((lone + 2) % 3)];
+        sums.level_length[at(node) * kLevels + static_cast<std::size_t>(k)] +=
+            share * (crossing(mesh, f, a, b, c) - crossing(mesh, f, a, d, c)).norm();
+      }
+    }
+
+    // Borders: midpoint segments between the regions of the triangle.
+    if (label[0] == label[1] && label[1] == label[2]) continue;
+    if (label[0] != label[1] && label[1] != label[2] && label[0] != label[2]) {
+      const Vec3 centroid = (point(mesh, v[0]) + point(mesh, v[1]) + point(mesh, v[2])) / 3.0;
+      for (std::size_t i = 0; i < 3; ++i) {
+        const std::size_t j = (i + 1) % 3;
+        add_border(label[i], label[j], (0.5 * (point(mesh, v[i]) + point(mesh, v[j])) - centroid).norm());
+      }
+      continue;
+    }
+    // Two regions: the segment between the midpoints of the two crossing
+    // edges is half the edge opposite the lone vertex.
+    const std::size_t lone = label[0] == label[1] ? 2 : (label[0] == label[2] ? 1 : 0);
+    const std::size_t j = (lone + 1) % 3, k = (lone + 2) % 3;
+    add_border(label[lone], label[j], 0.5 * (point(mesh, v[j]) - point(mesh, v[k])).norm());
+  }
+  return sums;
+}
+
+/// log2(1 + count) / kCountScale.
+double scaled_count(Index count) { return std::log2(1.0 + static_cast<double>(count)) / kCountScale; }
+
+/// The k largest of `values` into `out` (descending, 0 where fewer).
+void largest(std::vector<double> values, double* out, int k) {
+  std::sort(values.begin(), values.end(), std::greater<>());
+  for (int i = 0; i < k; ++i) out[i] = at(i) < values.size() ? values[at(i)] : 0.0;
+}
+
+/// Eigenvalues 2 .. kEigenvalues + 1 of the normalized graph Laplacian
+/// I - D^-1/2 A D^-1/2 (in [0, 2]), halved; 0.5 (the mean eigenvalue) where
+/// the graph has fewer nodes.
+void laplacian_spectrum(const ReebGraph& reeb, const std::vector<double>& degree, double* out) {
+  const Index n = reeb.num_nodes();
+  Eigen::MatrixXd laplacian = Eigen::MatrixXd::Zero(n, n);
+  for (Index i = 0; i < n; ++i) laplacian(i, i) = degree[at(i)] > 0 ? 1.0 : 0.0;
+  for (const auto& [a, b] : reeb.edges) {
+    const double w = -1.0 / std::sqrt(degree[at(a)] * degree[at(b)]);
+    laplacian(a, b) = w;
+    laplacian(b, a) = w;
+  }
+  const Eigen::VectorXd eigenvalues =
+      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(laplacian, Eigen::EigenvaluesOnly).eigenvalues();
+  for (int i = 0; i < kEigenvalues; ++i)
+    out[i] = i + 1 < n ? std::clamp(eigenvalues(i + 1), 0.0, 2.0) / 2.0 : 0.5;
+}
+
+}  // namespace
+
+const std::array<const char*, kSignatureLength> kSignatureNames = {
+    "nodes",          "leaves",         "bifurcations",   "junctions",      "cycles",         "root_area",
+    "leaf_area_0",    "leaf_area_1",    "leaf_area_2",    "leaf_area_3",    "leaf_area_4",    "leaf_area_5",
+    "leaf_extent_0",  "leaf_extent_1",  "leaf_extent_2",  "leaf_extent_3",  "leaf_extent_4",  "leaf_extent_5",
+    "area_hist_0",    "area_hist_1",    "area_hist_2",    "area_hist_3",    "area_hist_4",    "area_hist_5",
+    "laplacian_2",    "laplacian_3",    "laplacian_4",    "laplacian_5",    "laplacian_6",    "laplacian_7",
+    "laplacian_8",    "laplacian_9"};
+
+GraphAttributes compute_attributes(const MeshAnalysis& analysis) {
+  const Mesh& mesh = analysis.mesh;
+  const ReebGraph& reeb = analysis.reeb;
+  const std::vector<double>& f = analysis.fq.value;
+  const auto where = [&] { return mesh.source.empty() ? std::string("mesh in memory") : mesh.source; };
+  if (reeb.nodes.empty())
+    throw InvalidArgument("compute_attributes: " + where() +
+                          " has no Reeb graph (analyzed with AnalysisOptions::reeb_graph = false)");
+  if (reeb.vertex_node.size() != at(mesh.num_vertices()) || f.size() != at(mesh.num_vertices()) ||
+      analysis.graph.num_vertices() != mesh.num_vertices())
+    throw InvalidArgument("compute_attributes: " + where() +
+                          ": the mesh, its graph, f_q and the segmentation differ in vertex count");
+
+  const Index original_vertices = original_vertex_count(mesh);
+  const TriangleSums sums = triangle_sums(mesh, original_vertices, f, reeb);
+  const std::vector<double> extent = geodesic_extents(analysis.graph, f, reeb);
+  const double length_unit = sums.total_area > 0.0 ? std::sqrt(sums.total_area) : 1.0;
+  const double diameter = analysis.features.diameter > 0.0 ? analysis.features.diameter : 1.0;
+  const auto relative = [](double value, double whole) { return whole > 0.0 ? value / whole : 0.0; };
+
+  std::vector<Index> vertices(reeb.nodes.size(), 0);
+  for (Index v = 0; v < original_vertices; ++v) ++vertices[at(reeb.vertex_node[at(v)])];
+  std::vector<double> degree(reeb.nodes.size(), 0.0);
+  for (const auto& [a, b] : reeb.edges) {
+    ++degree[at(a)];
+    ++degree[at(b)];
+  }
+
+  GraphAttributes out;
+  out.node.resize(reeb.nodes.size() * kNodeAttributeCount);
+  for (std::size_t i = 0; i < reeb.nodes.size(); ++i) {
+    const ReebNode& node = reeb.nodes[i];
+    double* row = out.node.data() + i * kNodeAttributeCount;
+    double level_sum = 0.0;
+    for (int k = 0; k < kLevels; ++k) level_sum += sums.level_length[i * kLevels + static_cast<std::size_t>(k)];
+    row[kNodeRelativeArea] = relative(sums.node_area[i], sums.total_area);
+    row[kNodeFqMin] = node.fq_min;
+    row[kNodeFqMax] = node.fq_max;
+    row[kNodeFqSpan] = node.fq_max - node.fq_min;
+    row[kNodeGeodesicExtent] = extent[i] / diameter;
+    row[kNodeMeanRadius] = level_sum / kLevels / (2.0 * static_cast<double>(EIGEN_PI)) / length_unit;
+    row[kNodeVertexShare] = relative(vertices[i], original_vertices);
+    row[kNodeDegree] = degree[i];
+    row[kNodeStartType] = static_cast<double>(node.type);
+    row[kNodeEndType] = static_cast<double>(node.end);
+  }
+  out.edge.resize(reeb.edges.size() * kEdgeAttributeCount);
+  for (std::size_t e = 0; e < reeb.edges.size(); ++e) {
+    double* row = out.edge.data() + e * kEdgeAttributeCount;
+    row[kEdgeBoundaryLength] = sums.border_length[e] / length_unit;
+    row[kEdgeEventFq] = f[at(reeb.nodes[at(reeb.edges[e][1])].birth_vertex)];
+  }
+
+  // Signature.
+  out.signature.assign(kSignatureLength, 0.0);
+  double* sig = out.signature.data();
+  const auto count_if = [&](auto predicate) {
+    return static_cast<Index>(std::count_if(reeb.nodes.begin(), reeb.nodes.end(), predicate));
+  };
+  sig[kSigCounts + 0] = scaled_count(reeb.num_nodes());
+  sig[kSigCounts + 1] = scaled_count(count_if([](const ReebNode& n) { return n.end == NodeType::Termination; }));
+  sig[kSigCounts + 2] = scaled_count(count_if([](const ReebNode& n) { return n.type == NodeType::Bifurcation; }));
+  sig[kSigCounts + 3] = scaled_count(count_if([](const ReebNode& n) { return n.type == NodeType::Junction; }));
+  sig[kSigCounts + 4] = scaled_count(reeb.independent_cycles());
+  sig[kSigRootArea] = out.node[kNodeRelativeArea];
+  std::vector<double> leaf_area, leaf_extent;
+  for (std::size_t i = 0; i < reeb.nodes.size(); ++i) {
+    const double* row = out.node.data() + i * kNodeAttributeCount;
+    if (reeb.nodes[i].end == NodeType::Termination) {
+      leaf_area.push_back(std::sqrt(row[kNodeRelativeArea]));
+      leaf_extent.push_back(row[kNodeGeodesicExtent]);
+    }
+    const auto bin = std::upper_bound(kAreaBinEnds.begin(), kAreaBinEnds.end(), row[kNodeRelativeArea]);
+    sig[kSigAreaHistogram + (bin - kAreaBinEnds.begin())] += 1.0 / static_cast<double>(reeb.nodes.size());
+  }
+  largest(std::move(leaf_area), sig + kSigLeafArea, kLeafSlots);
+  largest(std::move(leaf_extent), sig + kSigLeafExtent, kLeafSlots);
+  laplacian_spectrum(reeb, degree, sig + kSigEigenvalues);
+  return out;
+}
+
+}  // namespace reebkit
