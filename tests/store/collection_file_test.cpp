@@ -1,0 +1,477 @@
+// The HDF5 collection file: round trips field by field, resume, errors, the
+// file as h5py + numpy read it, and survival of kill -9 at random moments.
+#include "reebkit/store/collection_file.h"
+
+#include "io/io_test_util.h"
+#include "reebkit/core/error.h"
+
+#include <H5Cpp.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <random>
+#include <set>
+#include <sstream>
+#include <thread>
+
+namespace reebkit {
+namespace {
+
+using test::TempDir;
+
+const char* const kPython = "/usr/bin/python3";
+
+/// A deterministic entry for index i: graphs of 0 to 49 nodes, some failed
+/// entries (i % 11 == 5), UTF-8 names (i % 7 == 3), missing classes, feature
+/// points on added vertices (-1), nodes without skeleton points.
+CollectionEntry make_entry(std::int64_t i) {
+  std::mt19937_64 rng(static_cast<std::uint64_t>(i) * 0x9e3779b97f4a7c15ULL + 1);
+  std::uniform_real_distribution<double> real(-1e3, 1e3);
+  const auto below = [&](std::int32_t n) { return static_cast<std::int32_t>(rng() % static_cast<std::uint64_t>(n)); };
+  CollectionEntry e;
+  e.name = (i % 7 == 3 ? "Ünïcødé/蛇 " : "shrec/") + std::to_string(i) + ".off";
+  e.class_label = i % 3 == 0 ? "" : "class " + std::to_string(i % 5);
+  e.content_hash = rng();
+  for (double& t : e.timings) t = std::abs(real(rng));
+  if (i % 11 == 5) {
+    e.error = "mesh " + std::to_string(i) + ".off:3: vertex «x» is not a number";
+    return e;
+  }
+  e.ok = true;
+  e.vertices = below(100000);
+  e.faces = 2 * e.vertices - 4;
+  const std::int32_t n = i % 13 == 0 ? 0 : 1 + below(49);
+  e.skeleton_offset.push_back(0);
+  for (std::int32_t k = 0; k < n; ++k) {
+    e.nodes.insert(e.nodes.end(), {k % 5, (k + 1) % 5, below(100000), 1 + below(5000)});
+    for (int c = 0; c < kGeomColumnCount; ++c) e.node_geometry.push_back(real(rng));
+    for (int c = 0; c < kNodeAttributeCount; ++c) e.node_attributes.push_back(real(rng));
+    const std::int32_t points = below(4);
+    for (std::int32_t p = 0; p < 3 * points; ++p) e.skeleton_points.push_back(real(rng));
+    e.skeleton_offset.push_back(e.skeleton_offset.back() + points);
+  }
+  const std::int32_t m = n < 2 ? 0 : n - 1 + below(3);
+  for (std::int32_t k = 0; k < m; ++k) {
+    const std::int32_t a = below(n - 1);
+    e.edges.insert(e.edges.end(), {a, a + 1 + below(n - 1 - a)});
+    for (int c = 0; c < kEdgeAttributeCount; ++c) e.edge_attributes.push_back(real(rng));
+  }
+  for (std::int32_t k = below(12); k > 0; --k) e.feature_points.push_back(below(100001) - 1);
+  for (int c = 0; c < kSignatureLength; ++c) e.signature.push_back(real(rng));
+  return e;
+}
+
+/// Field-by-field equality (doubles bit for bit; a failed entry's signature
+/// reads back as NaN).
+void expect_same(const CollectionEntry& expected, const CollectionEntry& actual, const std::string& where) {
+  SCOPED_TRACE(where + " entry '" + expected.name + "'");
+  EXPECT_EQ(expected.name, actual.name);
+  EXPECT_EQ(expected.class_label, actual.class_label);
+  EXPECT_EQ(expected.content_hash, actual.content_hash);
+  EXPECT_EQ(expected.vertices, actual.vertices);
+  EXPECT_EQ(expected.faces, actual.faces);
+  EXPECT_EQ(expected.ok, actual.ok);
+  EXPECT_EQ(expected.error, actual.error);
+  EXPECT_EQ(expected.timings, actual.timings);
+  EXPECT_EQ(expected.nodes, actual.nodes);
+  EXPECT_EQ(expected.node_geometry, actual.node_geometry);
+  EXPECT_EQ(expected.node_attributes, actual.node_attributes);
+  EXPECT_EQ(expected.edges, actual.edges);
+  EXPECT_EQ(expected.edge_attributes, actual.edge_attributes);
+  EXPECT_EQ(expected.feature_points, actual.feature_points);
+  // a graph of no nodes (a failed entry) reads back with the offsets {0}
+  EXPECT_EQ(expected.skeleton_offset.empty() ? std::vector<std::int64_t>{0} : expected.skeleton_offset,
+            actual.skeleton_offset);
+  EXPECT_EQ(expected.skeleton_points, actual.skeleton_points);
+  if (expected.signature.empty()) {
+    ASSERT_EQ(actual.signature.size(), static_cast<std::size_t>(kSignatureLength));
+    for (const double s : actual.signature) EXPECT_TRUE(std::isnan(s));
+  } else {
+    EXPECT_EQ(expected.signature, actual.signature);
+  }
+}
+
+Provenance test_provenance() {
+  Provenance p;
+  p.options = R"({"reeb_graph": true})";
+  p.command = "reeb index «meshes» -o c.h5";
+  return p;
+}
+
+void write_entries(const std::filesystem::path& path, std::int64_t first, std::int64_t last, bool resume) {
+  CollectionWriter writer(path, test_provenance(), resume);
+  for (std::int64_t i = first; i < last; ++i) {
+    writer.append(make_entry(i));
+    if (i % 97 == 13) writer.checkpoint();
+  }
+  writer.close();
+}
+
+/// Reads every entry of `path` and checks it against make_entry.
+void expect_entries(const std::filesystem::path& path, std::int64_t count) {
+  const CollectionReader reader(path);
+  ASSERT_EQ(reader.size(), count);
+  ASSERT_EQ(reader.names().size(), static_cast<std::size_t>(count));
+  ASSERT_EQ(reader.signatures().size(), static_cast<std::size_t>(count * kSignatureLength));
+  for (std::int64_t i = 0; i < count; ++i) {
+    const CollectionEntry e = make_entry(i);
+    expect_same(e, reader.entry(i), path.filename().string());
+    EXPECT_EQ(reader.names()[static_cast<std::size_t>(i)], e.name);
+    EXPECT_EQ(reader.class_labels()[static_cast<std::size_t>(i)], e.class_label);
+    EXPECT_EQ(reader.find(e.name), i);
+  }
+}
+
+TEST(CollectionFile, RoundTripFieldByField) {
+  const TempDir dir;
+  // 700 entries: several write batches, chunks and checkpoints.
+  write_entries(dir / "c.h5", 0, 700, false);
+  expect_entries(dir / "c.h5", 700);
+  const CollectionReader reader(dir / "c.h5");
+  EXPECT_EQ(reader.find("no such mesh"), std::nullopt);
+  EXPECT_EQ(reader.provenance().reebkit_version, REEBKIT_VERSION);
+  EXPECT_EQ(reader.provenance().options, test_provenance().options);
+  EXPECT_EQ(reader.provenance().command, test_provenance().command);
+  // ISO 8601, UTC: 2024-01-02T03:04:05Z
+  EXPECT_EQ(reader.provenance().created.size(), 20u);
+  EXPECT_EQ(reader.provenance().created.back(), 'Z');
+  EXPECT_THROW(reader.entry(700), InvalidArgument);
+  EXPECT_THROW(reader.entry(-1), InvalidArgument);
+}
+
+TEST(CollectionFile, EmptyCollection) {
+  const TempDir dir;
+  CollectionWriter(dir / "c.h5", test_provenance(), false).close();
+  const CollectionReader reader(dir / "c.h5");
+  EXPECT_EQ(reader.size(), 0);
+  EXPECT_TRUE(reader.names().empty());
+  EXPECT_TRUE(reader.signatures().empty());
+}
+
+TEST(CollectionFile, ResumeKeepsOldEntriesAndAppends) {
+  const TempDir dir;
+  write_entries(dir / "c.h5", 0, 300, false);
+  {
+    CollectionWriter writer(dir / "c.h5", test_provenance(), true);
+    ASSERT_EQ(writer.existing().size(), 300u);
+    for (std::int64_t i = 0; i < 300; ++i) {
+      EXPECT_EQ(writer.existing()[static_cast<std::size_t>(i)].first, make_entry(i).name);
+      EXPECT_EQ(writer.existing()[static_cast<std::size_t>(i)].second, make_entry(i).content_hash);
+    }
+    EXPECT_EQ(writer.size(), 300);
+    for (std::int64_t i = 300; i < 420; ++i) writer.append(make_entry(i));
+    EXPECT_EQ(writer.size(), 420);
+  }  // the destructor checkpoints
+  expect_entries(dir / "c.h5", 420);
+  EXPECT_FALSE(std::filesystem::exists(dir / "c.h5.resume-tmp"));
+  // Resuming a file that does not exist starts a new one.
+  CollectionWriter fresh(dir / "new.h5", test_provenance(), true);
+  EXPECT_TRUE(fresh.existing().empty());
+}
+
+TEST(CollectionFile, ReplacesAnExistingFileWithoutResume) {
+  const TempDir dir;
+  write_entries(dir / "c.h5", 0, 50, false);
+  write_entries(dir / "c.h5", 0, 7, false);
+  expect_entries(dir / "c.h5", 7);
+}
+
+/// The Error `action` throws; fails the test when it throws none.
+template <typename Action>
+std::string error_message(Action&& action) {
+  try {
+    action();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "expected an Error";
+  return {};
+}
+
+TEST(CollectionFile, ErrorsNameTheFile) {
+  const TempDir dir;
+  const auto contains = [](const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+  };
+  const auto missing = dir / "missing.h5";
+  EXPECT_TRUE(contains(error_message([&] { CollectionReader r(missing); }), missing.string()));
+
+  const auto text = dir / "text.h5";
+  test::write_bytes(text, "not HDF5 at all\n");
+  const std::string not_hdf5 = error_message([&] { CollectionReader r(text); });
+  EXPECT_TRUE(contains(not_hdf5, text.string()) && contains(not_hdf5, "not an HDF5 file")) << not_hdf5;
+  EXPECT_TRUE(contains(error_message([&] { CollectionWriter w(text, test_provenance(), true); }), text.string()));
+
+  const auto other = dir / "other.h5";
+  {
+    H5::H5File file(other.string(), H5F_ACC_TRUNC);
+    const hsize_t dims[1] = {3};
+    file.createDataSet("data", H5::PredType::NATIVE_INT, H5::DataSpace(1, dims));
+  }
+  const std::string no_layout = error_message([&] { CollectionReader r(other); });
+  EXPECT_TRUE(contains(no_layout, other.string()) && contains(no_layout, "not a reebkit collection")) << no_layout;
+
+  const auto future = dir / "future.h5";
+  write_entries(future, 0, 3, false);
+  {
+    H5::H5File file(future.string(), H5F_ACC_RDWR);
+    const int version = kCollectionLayoutVersion + 1;
+    file.openAttribute("layout").write(H5::PredType::NATIVE_INT, &version);
+  }
+  const std::string layout = error_message([&] { CollectionReader r(future); });
+  EXPECT_TRUE(contains(layout, future.string()) && contains(layout, "layout version " + std::to_string(kCollectionLayoutVersion + 1)))
+      << layout;
+
+  const auto unwritable = dir / "no_such_folder" / "c.h5";
+  EXPECT_TRUE(contains(error_message([&] { CollectionWriter w(unwritable, test_provenance(), false); }),
+                       unwritable.string()));
+}
+
+TEST(CollectionFile, RejectsInconsistentEntries) {
+  const TempDir dir;
+  CollectionWriter writer(dir / "c.h5", test_provenance(), false);
+  CollectionEntry e = make_entry(1);
+  e.node_attributes.pop_back();
+  EXPECT_THROW(writer.append(e), InvalidArgument);
+  e = make_entry(1);
+  e.edges[0] = e.num_nodes();
+  EXPECT_THROW(writer.append(e), InvalidArgument);
+  e = make_entry(1);
+  e.skeleton_points.push_back(0.0);
+  EXPECT_THROW(writer.append(e), InvalidArgument);
+  EXPECT_EQ(writer.size(), 0);
+}
+
+// --- The file as Python reads it ---------------------------------------------
+
+/// Reads a collection with h5py + numpy only (the README snippet, plus checks
+/// of the CSR invariants), and prints every committed entry, one field per
+/// line: "<i>/<field>\t<values...>".
+const char* const kPythonReader = R"PY(
+import sys
+import h5py
+import numpy as np
+
+out = sys.stdout.buffer
+def emit(key, values):
+    out.write(("\t".join([key] + [repr(v) if isinstance(v, float) else str(v) for v in values]) + "\n").encode())
+
+# swmr=True also opens a file whose writer was killed (README).
+with h5py.File(sys.argv[1], "r", libver="latest", swmr=True) as f:
+    G = int(f["count"][0])                      # trust only the committed entries
+    emit("layout", [int(f.attrs["layout"])])
+    emit("command", [f.attrs["command"]])
+    emit("count", [G])
+    for key in ("timings", "signature", "nodes", "node_geometry", "node_attr", "edges", "edge_attr", "skeleton_points"):
+        emit("columns/" + key, [c.decode() if isinstance(c, bytes) else c for c in f[key].attrs["columns"]])
+    name = f["name"].asstr()[:G]
+    cls = f["class"].asstr()[:G]
+    error = f["error"].asstr()[:G]
+    status, hashes = f["status"][:G], f["content_hash"][:G]
+    vertices, faces, timings, signature = f["vertices"][:G], f["faces"][:G], f["timings"][:G], f["signature"][:G]
+    node_offset, edge_offset, feature_offset = (f[k][:G + 1] for k in ("node_offset", "edge_offset", "feature_offset"))
+    N, E, F = node_offset[G], edge_offset[G], feature_offset[G]
+    nodes, node_geometry, node_attr = f["nodes"][:N], f["node_geometry"][:N], f["node_attr"][:N]
+    skeleton_offset = f["skeleton_offset"][:N + 1]
+    skeleton_points = f["skeleton_points"][:skeleton_offset[N]]
+    edges, edge_attr, feature_points = f["edges"][:E], f["edge_attr"][:E], f["feature_points"][:F]
+
+for o in (node_offset, edge_offset, feature_offset, skeleton_offset):
+    assert o[0] == 0 and np.all(np.diff(o) >= 0)
+for i in range(G):
+    n0, n1 = node_offset[i], node_offset[i + 1]
+    e0, e1 = edge_offset[i], edge_offset[i + 1]
+    assert np.all((edges[e0:e1] >= 0) & (edges[e0:e1] < n1 - n0))  # node ids local to the graph
+    assert status[i] in (0, 1) and (status[i] == 0 or n1 == n0)
+    s0, s1 = skeleton_offset[n0], skeleton_offset[n1]
+    for key, values in (("name", [name[i]]), ("class", [cls[i]]), ("error", [error[i]]), ("status", [status[i]]),
+                        ("hash", [hashes[i]]), ("vertices", [vertices[i]]), ("faces", [faces[i]]),
+                        ("timings", timings[i]), ("signature", signature[i]), ("nodes", nodes[n0:n1].ravel()),
+                        ("node_geometry", node_geometry[n0:n1].ravel()), ("node_attr", node_attr[n0:n1].ravel()),
+                        ("edges", edges[e0:e1].ravel()), ("edge_attr", edge_attr[e0:e1].ravel()),
+                        ("features", feature_points[feature_offset[i]:feature_offset[i + 1]]),
+                        ("skeleton_offset", skeleton_offset[n0:n1 + 1] - s0),
+                        ("skeleton_points", skeleton_points[s0:s1].ravel())):
+        emit("%d/%s" % (i, key), [v.item() if hasattr(v, "item") else v for v in values])
+)PY";
+
+bool python_has_h5py() {
+  if (!std::filesystem::exists(kPython)) return false;
+  return std::system((std::string(kPython) + " -c 'import h5py, numpy' 2>/dev/null").c_str()) == 0;
+}
+
+/// Python's output, as key -> tab-separated values.
+std::map<std::string, std::vector<std::string>> read_with_python(const std::filesystem::path& path) {
+  const std::filesystem::path script = path.parent_path() / "read_collection.py";
+  test::write_bytes(script, kPythonReader);
+  const std::string command = std::string(kPython) + " '" + script.string() + "' '" + path.string() + "' 2>&1";
+  FILE* pipe = ::popen(command.c_str(), "r");
+  std::string output;
+  char buffer[4096];
+  while (pipe != nullptr && std::fgets(buffer, sizeof buffer, pipe) != nullptr) output += buffer;
+  const int status = pipe != nullptr ? ::pclose(pipe) : -1;
+  EXPECT_EQ(status, 0) << output;
+  std::map<std::string, std::vector<std::string>> fields;
+  std::istringstream lines(output);
+  for (std::string line; std::getline(lines, line);) {
+    std::vector<std::string> parts;
+    std::istringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, '\t');) parts.push_back(cell);
+    if (parts.empty()) continue;
+    const std::string key = parts.front();
+    fields[key] = std::vector<std::string>(parts.begin() + 1, parts.end());
+  }
+  return fields;
+}
+
+template <typename T>
+std::vector<T> parse(const std::vector<std::string>& cells) {
+  std::vector<T> out;
+  for (const std::string& c : cells) {
+    if constexpr (std::is_floating_point_v<T>) out.push_back(std::stod(c));
+    else out.push_back(static_cast<T>(std::stoll(c)));
+  }
+  return out;
+}
+
+/// Entry i as Python printed it.
+CollectionEntry entry_from_python(const std::map<std::string, std::vector<std::string>>& fields, std::int64_t i) {
+  const auto field = [&](const std::string& key) -> const std::vector<std::string>& {
+    static const std::vector<std::string> none;
+    const auto it = fields.find(std::to_string(i) + "/" + key);
+    return it == fields.end() ? none : it->second;
+  };
+  const auto one = [&](const std::string& key) { return field(key).empty() ? std::string() : field(key).front(); };
+  CollectionEntry e;
+  e.name = one("name");
+  e.class_label = one("class");
+  e.error = one("error");
+  e.ok = one("status") == "0";
+  e.content_hash = std::stoull(one("hash"));
+  e.vertices = std::stoll(one("vertices"));
+  e.faces = std::stoll(one("faces"));
+  const auto timings = parse<double>(field("timings"));
+  std::copy_n(timings.begin(), std::min<std::size_t>(timings.size(), kTimeColumnCount), e.timings.begin());
+  e.signature = parse<double>(field("signature"));
+  e.nodes = parse<std::int32_t>(field("nodes"));
+  e.node_geometry = parse<double>(field("node_geometry"));
+  e.node_attributes = parse<double>(field("node_attr"));
+  e.edges = parse<std::int32_t>(field("edges"));
+  e.edge_attributes = parse<double>(field("edge_attr"));
+  e.feature_points = parse<std::int32_t>(field("features"));
+  e.skeleton_offset = parse<std::int64_t>(field("skeleton_offset"));
+  e.skeleton_points = parse<double>(field("skeleton_points"));
+  return e;
+}
+
+void expect_python_reads(const std::filesystem::path& path, std::int64_t count) {
+  const auto fields = read_with_python(path);
+  ASSERT_EQ(fields.count("count"), 1u);
+  ASSERT_EQ(fields.at("count"), std::vector<std::string>{std::to_string(count)});
+  for (std::int64_t i = 0; i < count; ++i) {
+    expect_same(make_entry(i), entry_from_python(fields, i), "python");
+  }
+}
+
+TEST(CollectionFile, PythonReadsItWithH5pyAndNumpy) {
+  if (!python_has_h5py()) GTEST_SKIP() << kPython << " with h5py and numpy not found";
+  const TempDir dir;
+  write_entries(dir / "c.h5", 0, 40, false);
+  expect_python_reads(dir / "c.h5", 40);
+  const auto fields = read_with_python(dir / "c.h5");
+  EXPECT_EQ(fields.at("layout"), std::vector<std::string>{std::to_string(kCollectionLayoutVersion)});
+  EXPECT_EQ(fields.at("command"), std::vector<std::string>{test_provenance().command});
+  const auto names = [](const auto& array) { return std::vector<std::string>(array.begin(), array.end()); };
+  EXPECT_EQ(fields.at("columns/node_attr"), names(kNodeAttributeNames));
+  EXPECT_EQ(fields.at("columns/edge_attr"), names(kEdgeAttributeNames));
+  EXPECT_EQ(fields.at("columns/signature"), names(kSignatureNames));
+  EXPECT_EQ(fields.at("columns/nodes").size(), static_cast<std::size_t>(kNodeColumnCount));
+  EXPECT_EQ(fields.at("columns/node_geometry").size(), static_cast<std::size_t>(kGeomColumnCount));
+  EXPECT_EQ(fields.at("columns/timings").size(), static_cast<std::size_t>(kTimeColumnCount));
+  EXPECT_EQ(fields.at("columns/edges").size(), 2u);
+  EXPECT_EQ(fields.at("columns/skeleton_points").size(), 3u);
+}
+
+// --- kill -9 ----------------------------------------------------------------
+
+/// The crash child checkpoints after entry i when this holds: irregular gaps
+/// of 1 to 5 entries, so that kills land in writes, flushes and commits.
+bool checkpoint_after(std::int64_t i) { return (i * 2654435761LL) % 5 == 0 || i % 5 == 4; }
+
+/// Child: writes make_entry(0, 1, ...) to `path`, reports each committed
+/// count on `report` (8 bytes) right after the checkpoint returns, and runs
+/// until it is killed.
+[[noreturn]] void crash_child(const std::filesystem::path& path, int report) {
+  try {
+    CollectionWriter writer(path, test_provenance(), false);
+    std::int64_t committed = 0;
+    if (::write(report, &committed, sizeof committed) != sizeof committed) ::_exit(3);
+    for (std::int64_t i = 0;; ++i) {
+      writer.append(make_entry(i));
+      if (checkpoint_after(i)) {
+        writer.checkpoint();
+        committed = i + 1;
+        if (::write(report, &committed, sizeof committed) != sizeof committed) ::_exit(3);
+      }
+    }
+  } catch (...) {
+    ::_exit(2);
+  }
+}
+
+TEST(CollectionFile, SurvivesKillMinus9AtRandomMoments) {
+  const TempDir dir;
+  const bool python = python_has_h5py();
+  std::mt19937 rng(20240611);
+  int trials_with_entries = 0;
+  for (int trial = 0; trial < 10; ++trial) {
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    const auto path = dir / ("crash" + std::to_string(trial) + ".h5");
+    int fds[2];
+    ASSERT_EQ(::pipe(fds), 0);
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      ::close(fds[0]);
+      crash_child(path, fds[1]);
+    }
+    ::close(fds[1]);
+    std::this_thread::sleep_for(std::chrono::milliseconds(std::uniform_int_distribution<int>(30, 600)(rng)));
+    ::kill(child, SIGKILL);
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    ASSERT_TRUE(WIFSIGNALED(status)) << "the child stopped by itself, status " << status;
+    std::int64_t reported = -1;
+    for (std::int64_t c = 0; ::read(fds[0], &c, sizeof c) == sizeof c;) reported = c;
+    ::close(fds[0]);
+    if (reported < 0) continue;  // killed before the file was set up
+
+    // The file holds the last reported checkpoint, or the one after it if the
+    // child died between committing it and reporting it.
+    std::int64_t next = reported;
+    while (!checkpoint_after(next)) ++next;
+    const std::int64_t count = CollectionReader(path).size();
+    EXPECT_TRUE(count == reported || count == next + 1) << count << " entries, reported " << reported;
+    expect_entries(path, count);
+    if (python && trial < 3) expect_python_reads(path, count);
+    trials_with_entries += count > 0;
+
+    // Resume drops anything past the checkpoint and appends after it.
+    {
+      CollectionWriter writer(path, test_provenance(), true);
+      ASSERT_EQ(static_cast<std::int64_t>(writer.existing().size()), count);
+      writer.append(make_entry(count));
+    }
+    expect_entries(path, count + 1);
+  }
+  EXPECT_GE(trials_with_entries, 5);
+}
+
+}  // namespace
+}  // namespace reebkit
