@@ -23,7 +23,7 @@ std::vector<std::string> names(const std::vector<MeshInput>& inputs) {
 
 /// The message of the InvalidArgument `f` throws ("" when none).
 template <typename F>
-std::string error_of(F&& f) {
+std::string argument_error(F&& f) {
   try {
     f();
   } catch (const InvalidArgument& e) {
@@ -70,7 +70,7 @@ TEST(MeshInputs, MissingPathsAreAllNamedWithTheListLine) {
   touch(dir / "ok.off");
   std::ofstream(dir / "list.lst") << "ok.off\n# comment\ngone.off\n";
   const std::string message =
-      error_of([&] { list_mesh_inputs({(dir / "list.lst").string(), (dir / "nowhere").string()}); });
+      argument_error([&] { list_mesh_inputs({(dir / "list.lst").string(), (dir / "nowhere").string()}); });
   EXPECT_NE(message.find("missing inputs"), std::string::npos) << message;
   EXPECT_NE(message.find((dir / "list.lst").string() + ":3: "), std::string::npos) << message;
   EXPECT_NE(message.find((dir / "nowhere").string()), std::string::npos) << message;
@@ -81,10 +81,10 @@ TEST(MeshInputs, DuplicateNamesAndUnknownKindsAreErrors) {
   touch(dir / "one/x.off");
   touch(dir / "two/x.off");
   touch(dir / "data.csv");
-  const std::string twice = error_of([&] { list_mesh_inputs({(dir / "one").string(), (dir / "two").string()}); });
+  const std::string twice = argument_error([&] { list_mesh_inputs({(dir / "one").string(), (dir / "two").string()}); });
   EXPECT_NE(twice.find("two meshes named 'x.off'"), std::string::npos) << twice;
   EXPECT_NE(twice.find((dir / "two" / "x.off").string()), std::string::npos) << twice;
-  const std::string kind = error_of([&] { list_mesh_inputs({(dir / "data.csv").string()}); });
+  const std::string kind = argument_error([&] { list_mesh_inputs({(dir / "data.csv").string()}); });
   EXPECT_NE(kind.find("data.csv: not a folder"), std::string::npos) << kind;
 }
 

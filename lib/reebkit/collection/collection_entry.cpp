@@ -1,0 +1,90 @@
+#include "reebkit/collection/collection_entry.h"
+
+#include "reebkit/core/error.h"
+#include "reebkit/mesh/hole_filling.h"
+
+#include <limits>
+#include <numeric>
+
+namespace reebkit {
+
+CollectionEntry make_collection_entry(const MeshAnalysis& analysis, const GraphAttributes& attributes) {
+  const ReebGraph& reeb = analysis.reeb;
+  const Mesh& mesh = analysis.mesh;
+  if (reeb.nodes.empty()) throw InvalidArgument("make_collection_entry: the analysis has no Reeb graph");
+  const auto n = static_cast<std::size_t>(reeb.num_nodes());
+  const auto e = static_cast<std::size_t>(reeb.num_edges());
+  if (attributes.node.size() != n * kNodeAttributeCount || attributes.edge.size() != e * kEdgeAttributeCount ||
+      attributes.signature.size() != static_cast<std::size_t>(kSignatureLength))
+    throw InvalidArgument("make_collection_entry: the attributes do not match the graph (" + std::to_string(n) +
+                          " nodes, " + std::to_string(e) + " edges)");
+
+  CollectionEntry out;
+  out.ok = true;
+  const Index kept = original_vertex_count(mesh);
+  out.vertices = kept;
+  for (Index f = 0; f < mesh.num_triangles(); ++f) out.faces += (mesh.triangles.row(f).array() < kept).all();
+  out.timings[kTimeGraph] = analysis.timings.graph;
+  out.timings[kTimeFeatures] = analysis.timings.features;
+  out.timings[kTimeQuotient] = analysis.timings.quotient;
+  out.timings[kTimeReeb] = analysis.timings.reeb;
+
+  out.nodes.reserve(n * kNodeColumnCount);
+  out.node_geometry.reserve(n * kGeomColumnCount);
+  out.skeleton_offset.push_back(0);
+  for (const ReebNode& node : reeb.nodes) {
+    out.nodes.insert(out.nodes.end(), {static_cast<std::int32_t>(node.type), static_cast<std::int32_t>(node.end),
+                                       mesh.source_index(node.birth_vertex), node.vertex_count});
+    out.node_geometry.insert(out.node_geometry.end(), {node.area, node.fq_min, node.fq_max, node.barycenter.x(),
+                                                       node.barycenter.y(), node.barycenter.z()});
+    for (const Vec3& p : node.skeleton) out.skeleton_points.insert(out.skeleton_points.end(), {p.x(), p.y(), p.z()});
+    out.skeleton_offset.push_back(out.skeleton_offset.back() + static_cast<std::int64_t>(node.skeleton.size()));
+  }
+  for (const auto& [a, b] : reeb.edges) out.edges.insert(out.edges.end(), {a, b});
+  for (const Index v : analysis.features.vertices) out.feature_points.push_back(mesh.source_index(v));
+  out.node_attributes = attributes.node;
+  out.edge_attributes = attributes.edge;
+  out.signature = attributes.signature;
+  return out;
+}
+
+CollectionEntry failed_collection_entry(std::string name, std::string class_label, std::uint64_t content_hash,
+                                        std::string error) {
+  CollectionEntry out;
+  out.name = std::move(name);
+  out.class_label = std::move(class_label);
+  out.content_hash = content_hash;
+  out.error = std::move(error);
+  out.signature.assign(kSignatureLength, std::numeric_limits<double>::quiet_NaN());
+  return out;
+}
+
+std::int64_t independent_cycles(const CollectionEntry& entry) {
+  // Union-find over the nodes counts the connected components.
+  std::vector<std::size_t> parent(static_cast<std::size_t>(entry.num_nodes()));
+  std::iota(parent.begin(), parent.end(), std::size_t{0});
+  const auto root = [&parent](std::size_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  std::int64_t components = entry.num_nodes();
+  for (std::size_t k = 0; k + 1 < entry.edges.size(); k += 2) {
+    const std::size_t a = root(static_cast<std::size_t>(entry.edges[k]));
+    const std::size_t b = root(static_cast<std::size_t>(entry.edges[k + 1]));
+    if (a != b) {
+      parent[a] = b;
+      --components;
+    }
+  }
+  return entry.num_edges() - entry.num_nodes() + components;
+}
+
+std::int64_t leaf_count(const CollectionEntry& entry) {
+  std::int64_t leaves = 0;
+  for (std::int32_t k = 0; k < entry.num_nodes(); ++k)
+    leaves += entry.nodes[static_cast<std::size_t>(k) * kNodeColumnCount + kNodeEnd] ==
+              static_cast<std::int32_t>(NodeType::Termination);
+  return leaves;
+}
+
+}  // namespace reebkit

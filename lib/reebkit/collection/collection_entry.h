@@ -1,0 +1,33 @@
+// The record of one analysed mesh as the collection file stores it
+// (CollectionEntry, store/collection_file.h), made from its analysis. The
+// graph JSON (output/reeb_graph_export.h) is written from these records, so
+// `reeb graph` and `reeb export` print the same document.
+#pragma once
+
+#include "reebkit/attributes/graph_attributes.h"
+#include "reebkit/store/collection_file.h"
+
+namespace reebkit {
+
+/// The graph part of an entry: nodes (type, end, birth vertex, vertex
+/// count), their geometry, node and edge attributes, edges, feature points,
+/// skeleton and signature; the vertex and face counts of the surface as read
+/// (hole filling excluded); timings graph, features, quotient and Reeb graph
+/// from the analysis. Vertex ids are those of the file (Mesh::source_index;
+/// -1 for a vertex added to close a hole). ok = true; the caller fills name,
+/// class label, content hash and the load and attribute times.
+/// \pre analysis.reeb has been built; `attributes` are compute_attributes(analysis).
+///      Throws InvalidArgument otherwise.
+CollectionEntry make_collection_entry(const MeshAnalysis& analysis, const GraphAttributes& attributes);
+
+/// A failed entry: ok = false, `error`, NaN signature, no graph.
+CollectionEntry failed_collection_entry(std::string name, std::string class_label, std::uint64_t content_hash,
+                                        std::string error);
+
+/// Counts of a graph read from entries, as the graph JSON and `reeb info` show them.
+/// First Betti number of an entry's graph: #edges - #nodes + #connected components.
+std::int64_t independent_cycles(const CollectionEntry& entry);
+/// Nodes whose region ends in a termination (leaves).
+std::int64_t leaf_count(const CollectionEntry& entry);
+
+}  // namespace reebkit

@@ -1,0 +1,73 @@
+// Indexing a collection (reeb index): every mesh read, analysed (feature
+// points, f_q, Reeb graph: Tierny et al. 2006, sections 4.1-4.2) and given
+// its attributes by OpenMP workers, and appended to the collection file in
+// input order by one thread, so that the file is the same whatever the
+// number of threads.
+#pragma once
+
+#include "reebkit/collection/mesh_inputs.h"
+#include "reebkit/collection/progress.h"
+#include "reebkit/collection/psb_classes.h"
+#include "reebkit/pipeline/analyze_mesh.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace reebkit {
+
+struct ExtractionOptions {
+  int threads = 0;                ///< workers computing meshes; 0 = omp_get_max_threads()
+  /// Keep the entries already in the output file and skip every input whose
+  /// name and content hash match one (a failed one too: same bytes, same
+  /// failure). See extract_collection for changed files.
+  bool resume = false;
+  int batch_size = 64;            ///< entries computed ahead of the writer at most (bounds memory); >= 1
+  double checkpoint_seconds = 5;  ///< make the file durable at least this often...
+  int checkpoint_entries = 1000;  ///< ...and every this many new entries
+  AnalysisOptions analysis;       ///< the pipeline run on each mesh (largest connected component)
+  ProgressSink progress;          ///< called after each entry written; empty = silent
+  std::string command;            ///< the command line, stored as provenance
+};
+
+struct FailedMesh {
+  std::string name;
+  std::string reason;  ///< the exception's message
+};
+
+struct ExtractionSummary {
+  std::int64_t ok = 0;              ///< meshes computed into an entry with a graph
+  std::vector<FailedMesh> failed;   ///< meshes computed into a failed entry, in input order
+  std::int64_t skipped = 0;         ///< inputs already in the file (resume): not computed
+  std::int64_t kept = 0;            ///< entries of the file kept (resume), skipped ones included
+  double seconds = 0;               ///< wall time of the whole call
+  double write_seconds = 0;         ///< of which the writer thread spent in CollectionWriter calls
+  std::int64_t computed() const { return ok + static_cast<std::int64_t>(failed.size()); }
+};
+
+/// The analysis options as one-line JSON text, for the file's provenance.
+std::string analysis_options_json(const AnalysisOptions& options);
+
+/// Indexes `inputs` into the collection file `output`: per mesh, load_mesh
+/// (largest component), analyze_mesh, compute_attributes and
+/// make_collection_entry, with the class from `classes` (class_of) and the
+/// content hash of its file. Any exception on a mesh becomes a failed entry
+/// with its message; the batch goes on. Entries are appended in input order
+/// and checkpointed (options), so an interrupted run leaves a file holding
+/// every entry up to the last checkpoint.
+///
+/// With options.resume the entries of an existing `output` are kept and an
+/// input whose (name, content hash) is among them is skipped. An input whose
+/// name is in the file with another hash (the file changed) is recomputed,
+/// and its old entry dropped: the file is rewritten, without the stale
+/// entries, into `output` + ".rewrite" and renamed over `output` at the end
+/// (until then `output` keeps its old content), so that a name appears at
+/// most once in a collection file and readers need no rule for duplicates.
+/// Entries of meshes that are no longer among the inputs are kept.
+/// Throws InvalidArgument on bad options and Error from the writer (the file
+/// cannot be created or written).
+ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const ClassMap& classes,
+                                     const std::filesystem::path& output, const ExtractionOptions& options = {});
+
+}  // namespace reebkit

@@ -1,0 +1,198 @@
+#include "reebkit/collection/extract_collection.h"
+
+#include "io/io_test_util.h"
+#include "reebkit/collection/collection_entry.h"
+#include "reebkit/io/content_hash.h"
+#include "reebkit/io/off.h"
+#include "reebkit/mesh/load_mesh.h"
+#include "reebkit/mesh/shapes.h"
+
+#include <gtest/gtest.h>
+
+#include <stdlib.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <optional>
+
+namespace reebkit::test {
+namespace {
+
+/// Seven small meshes (stars with 1-5 arms, two tori) and a broken file, in a
+/// folder: the input order is broken.off, m1.off ... m7.off.
+std::vector<MeshInput> write_collection(const TempDir& dir) {
+  std::filesystem::create_directories(dir / "meshes");
+  for (int arms = 1; arms <= 5; ++arms)
+    write_off(dir / ("meshes/m" + std::to_string(arms) + ".off"), make_star(StarOptions{arms, 2}));
+  write_off(dir / "meshes/m6.off", make_torus(24, 10));
+  write_off(dir / "meshes/m7.off", make_torus(30, 8, 1.0, 0.25));
+  std::ofstream(dir / "meshes/broken.off") << "OFF\n3 1 0\n0 0 0\n1 0 0\n";
+  return list_mesh_inputs({(dir / "meshes").string()});
+}
+
+ExtractionOptions with_threads(int threads) {
+  ExtractionOptions options;
+  options.threads = threads;
+  options.batch_size = 2;  // workers wait for the writer: the ring wraps around
+  return options;
+}
+
+/// Every field but the timings.
+void expect_same(const CollectionEntry& a, const CollectionEntry& b) {
+  SCOPED_TRACE(a.name);
+  EXPECT_EQ(a.name, b.name);
+  EXPECT_EQ(a.class_label, b.class_label);
+  EXPECT_EQ(a.content_hash, b.content_hash);
+  EXPECT_EQ(a.vertices, b.vertices);
+  EXPECT_EQ(a.faces, b.faces);
+  EXPECT_EQ(a.ok, b.ok);
+  EXPECT_EQ(a.error, b.error);
+  EXPECT_EQ(a.nodes, b.nodes);
+  EXPECT_EQ(a.node_geometry, b.node_geometry);
+  EXPECT_EQ(a.node_attributes, b.node_attributes);
+  EXPECT_EQ(a.edges, b.edges);
+  EXPECT_EQ(a.edge_attributes, b.edge_attributes);
+  EXPECT_EQ(a.feature_points, b.feature_points);
+  EXPECT_EQ(a.skeleton_offset, b.skeleton_offset);
+  EXPECT_EQ(a.skeleton_points, b.skeleton_points);
+  ASSERT_EQ(a.signature.size(), b.signature.size());
+  for (std::size_t k = 0; k < a.signature.size(); ++k)  // NaN == NaN for failed entries
+    EXPECT_TRUE(a.signature[k] == b.signature[k] || (std::isnan(a.signature[k]) && std::isnan(b.signature[k]))) << k;
+}
+
+void expect_same_files(const std::filesystem::path& a, const std::filesystem::path& b) {
+  const CollectionReader ra(a), rb(b);
+  ASSERT_EQ(ra.size(), rb.size());
+  for (std::int64_t i = 0; i < ra.size(); ++i) expect_same(ra.entry(i), rb.entry(i));
+}
+
+/// The entry of `input` computed directly, without the extractor.
+CollectionEntry direct_entry(const MeshInput& input) {
+  const MeshAnalysis analysis = analyze_mesh(load_mesh(input.path).components.front());
+  CollectionEntry entry = make_collection_entry(analysis, compute_attributes(analysis));
+  entry.name = input.name;
+  entry.content_hash = content_hash(input.path);
+  return entry;
+}
+
+TEST(ExtractCollection, BrokenMeshIsRecordedAndTheOthersMatchTheDirectPipeline) {
+  const TempDir dir;
+  const std::vector<MeshInput> inputs = write_collection(dir);
+  ASSERT_EQ(inputs.size(), 8u);
+  ASSERT_EQ(inputs[0].name, "broken.off");
+  const ClassMap classes = {{"m1", "star"}, {"m6", "torus"}};
+  const ExtractionSummary summary = extract_collection(inputs, classes, dir / "c.h5", with_threads(2));
+  EXPECT_EQ(summary.ok, 7);
+  ASSERT_EQ(summary.failed.size(), 1u);
+  EXPECT_EQ(summary.failed[0].name, "broken.off");
+  EXPECT_NE(summary.failed[0].reason.find("broken.off"), std::string::npos) << summary.failed[0].reason;
+  EXPECT_EQ(summary.skipped, 0);
+  EXPECT_GE(summary.seconds, summary.write_seconds);
+
+  const CollectionReader reader(dir / "c.h5");
+  ASSERT_EQ(reader.size(), 8);
+  const CollectionEntry broken = reader.entry(0);
+  EXPECT_FALSE(broken.ok);
+  EXPECT_EQ(broken.error, summary.failed[0].reason);
+  EXPECT_EQ(broken.num_nodes(), 0);
+  for (std::size_t i = 1; i < inputs.size(); ++i) {
+    CollectionEntry expected = direct_entry(inputs[i]);
+    expected.class_label = i == 1 ? "star" : i == 6 ? "torus" : "";
+    expect_same(reader.entry(static_cast<std::int64_t>(i)), expected);
+    EXPECT_EQ(reader.names()[i], inputs[i].name);
+  }
+  // A torus's graph has one cycle (its genus), a star's none.
+  for (int arms = 1; arms <= 5; ++arms) EXPECT_EQ(independent_cycles(reader.entry(arms)), 0);
+  EXPECT_EQ(independent_cycles(reader.entry(6)), 1);
+  EXPECT_EQ(independent_cycles(reader.entry(7)), 1);
+}
+
+TEST(ExtractCollection, SerialAndParallelFilesAreTheSame) {
+  const TempDir dir;
+  const std::vector<MeshInput> inputs = write_collection(dir);
+  extract_collection(inputs, {}, dir / "serial.h5", with_threads(1));
+  extract_collection(inputs, {}, dir / "parallel.h5", with_threads(2));
+  expect_same_files(dir / "serial.h5", dir / "parallel.h5");
+}
+
+/// Indexes `inputs` into `output` and dies (like kill -9: no destructor, no
+/// flush) right after the 5th entry was handed to the writer, with a
+/// checkpoint every 2 entries and none by time.
+[[noreturn]] void index_and_die(const std::vector<MeshInput>& inputs, const std::filesystem::path& output) {
+  ExtractionOptions options = with_threads(2);
+  options.checkpoint_entries = 2;
+  options.checkpoint_seconds = 1e9;
+  options.progress = [](const ProgressState& s) {
+    if (s.done() == 5) std::_Exit(3);
+  };
+  extract_collection(inputs, {}, output, options);
+  std::_Exit(0);
+}
+
+TEST(ExtractCollection, ResumeAfterACrashComputesOnlyTheRestAndGivesTheSameFile) {
+  // The death test child re-runs this test binary (no fork of OpenMP
+  // threads) up to EXPECT_EXIT; it finds the parent's folder in the
+  // environment and indexes the parent's meshes.
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  constexpr const char* kShared = "REEBKIT_CRASH_TEST_DIR";
+  std::optional<TempDir> own;  // in the parent only
+  if (std::getenv(kShared) == nullptr) {
+    own.emplace();
+    write_collection(*own);
+    ::setenv(kShared, (*own / "").c_str(), 1);
+  }
+  const std::filesystem::path dir = std::getenv(kShared);
+  const std::vector<MeshInput> inputs = list_mesh_inputs({(dir / "meshes").string()});
+  EXPECT_EXIT(index_and_die(inputs, dir / "c.h5"), ::testing::ExitedWithCode(3), "");
+  ::unsetenv(kShared);
+  // The checkpoints after entries 2 and 4 are on disk; the 5th is not.
+  ASSERT_EQ(CollectionReader(dir / "c.h5").size(), 4);
+
+  ExtractionOptions resume = with_threads(2);
+  resume.resume = true;
+  const ExtractionSummary summary = extract_collection(inputs, {}, dir / "c.h5", resume);
+  EXPECT_EQ(summary.skipped, 4);
+  EXPECT_EQ(summary.kept, 4);
+  EXPECT_EQ(summary.computed(), 4);  // the analyses run: only the meshes not in the file
+
+  extract_collection(inputs, {}, dir / "whole.h5", with_threads(2));
+  expect_same_files(dir / "c.h5", dir / "whole.h5");
+
+  // Resuming a complete file computes nothing and changes nothing.
+  const ExtractionSummary again = extract_collection(inputs, {}, dir / "c.h5", resume);
+  EXPECT_EQ(again.computed(), 0);
+  EXPECT_EQ(again.skipped, 8);
+  expect_same_files(dir / "c.h5", dir / "whole.h5");
+}
+
+TEST(ExtractCollection, ReindexingRecomputesOnlyChangedFilesAndKeepsNamesUnique) {
+  const TempDir dir;
+  const std::vector<MeshInput> inputs = write_collection(dir);
+  extract_collection(inputs, {}, dir / "c.h5", with_threads(2));
+  // m3 becomes a 4-armed star: same name, new bytes.
+  write_off(dir / "meshes/m3.off", make_star(StarOptions{4, 2, 2.0, 0.2, 0.5}));
+  ExtractionOptions resume = with_threads(2);
+  resume.resume = true;
+  const ExtractionSummary summary = extract_collection(inputs, {}, dir / "c.h5", resume);
+  EXPECT_EQ(summary.computed(), 1);
+  EXPECT_EQ(summary.ok, 1);
+  EXPECT_EQ(summary.skipped, 7);
+  EXPECT_FALSE(std::filesystem::exists(dir / "c.h5.rewrite"));
+
+  const CollectionReader reader(dir / "c.h5");
+  ASSERT_EQ(reader.size(), 8);
+  std::vector<std::string> names = reader.names();
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(std::adjacent_find(names.begin(), names.end()), names.end()) << "a name twice";
+  // The old entries keep their order; the recomputed one comes last.
+  const auto m3 = reader.find("m3.off");
+  ASSERT_TRUE(m3.has_value());
+  EXPECT_EQ(*m3, 7);
+  expect_same(reader.entry(*m3), direct_entry(inputs[3]));
+  for (std::size_t i = 0; i < 7; ++i) EXPECT_EQ(reader.names()[i], inputs[i < 3 ? i : i + 1].name);
+}
+
+}  // namespace
+}  // namespace reebkit::test
