@@ -246,6 +246,8 @@ TEST(CollectionFile, RejectsInconsistentEntries) {
   e.skeleton_points.push_back(0.0);
   EXPECT_THROW(writer.append(e), InvalidArgument);
   EXPECT_EQ(writer.size(), 0);
+  writer.close();
+  EXPECT_THROW(writer.append(make_entry(0)), InvalidArgument);
 }
 
 // --- The file as Python reads it ---------------------------------------------

@@ -621,6 +621,7 @@ std::int64_t CollectionWriter::size() const { return impl_->written + impl_->buf
 
 void CollectionWriter::append(CollectionEntry entry) {
   Impl& w = *impl_;
+  if (w.file.getId() == H5I_INVALID_HID) throw InvalidArgument(w.path.string() + ": append after close()");
   check_entry(entry, w.path);
   Batch& b = w.batch;
   const std::int64_t n = entry.num_nodes();
