@@ -62,7 +62,8 @@ TEST(MeshInputs, MeshFilesKeepTheirOrderAndNameAsGiven) {
   touch(dir / "b.off");
   touch(dir / "a.off");
   const std::vector<MeshInput> found = list_mesh_inputs({(dir / "b.off").string(), (dir / "a.off").string()});
-  EXPECT_EQ(names(found), (std::vector<std::string>{(dir / "b.off").generic_string(), (dir / "a.off").generic_string()}));
+  EXPECT_EQ(names(found),
+            (std::vector<std::string>{(dir / "b.off").generic_string(), (dir / "a.off").generic_string()}));
 }
 
 TEST(MeshInputs, MissingPathsAreAllNamedWithTheListLine) {

@@ -44,5 +44,8 @@ LoadedMesh load_for_command(const std::string& path, bool all_components);
 int run_features(const std::vector<std::string>& args);
 int run_graph(const std::vector<std::string>& args);
 int run_deform(const std::vector<std::string>& args);
+int run_index(const std::vector<std::string>& args);
+int run_info(const std::vector<std::string>& args);
+int run_export(const std::vector<std::string>& args);
 
 }  // namespace reebkit::cli

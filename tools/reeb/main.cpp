@@ -13,6 +13,9 @@ const std::vector<Command>& commands() {
       {"features", "feature points and quotient function f_q of a mesh", run_features},
       {"graph", "high-level Reeb graph, segmentation and skeleton of a mesh", run_graph},
       {"deform", "turn the component of a Reeb graph node (a limb) about where it attaches", run_deform},
+      {"index", "index a collection of meshes into one HDF5 file of attributed Reeb graphs", run_index},
+      {"info", "what a collection file holds: counts, classes, failures, provenance", run_info},
+      {"export", "one graph of a collection file as the JSON of reeb graph", run_export},
   };
   return all;
 }

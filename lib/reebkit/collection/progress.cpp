@@ -70,7 +70,8 @@ void ProgressBar::operator()(const ProgressState& state) {
 void ProgressBar::finish(const ProgressState& state) {
   if (terminal_) *out_ << "\r\033[K";
   char text[200];
-  std::snprintf(text, sizeof text, "%lld meshes: %lld ok, %lld failed, %lld already indexed, in %.2f s (%.1f meshes/s)\n",
+  std::snprintf(text, sizeof text,
+                "%lld meshes: %lld ok, %lld failed, %lld already indexed, in %.2f s (%.1f meshes/s)\n",
                 static_cast<long long>(state.total), static_cast<long long>(state.ok),
                 static_cast<long long>(state.failed), static_cast<long long>(state.skipped), state.seconds,
                 state.rate());

@@ -1,5 +1,6 @@
 #include "reebkit/output/reeb_graph_export.h"
 
+#include "reebkit/collection/collection_entry.h"
 #include "reebkit/core/error.h"
 #include "reebkit/io/ply.h"
 #include "reebkit/mesh/hole_filling.h"
@@ -41,89 +42,116 @@ void check_written(const std::ofstream& out, const std::filesystem::path& path) 
   if (!out) throw Error(path.string() + ": write failed");
 }
 
-template <typename Point>
-std::vector<double> xyz(const Point& p) {
-  return {p(0), p(1), p(2)};
-}
-
 }  // namespace
 
-void write_reeb_graph_json(const std::filesystem::path& path, const std::vector<MeshAnalysis>& components) {
-  check_components("write_reeb_graph_json", components);
-  const std::vector<Index> offset = node_offsets(components);
+void write_reeb_graph_json(std::ostream& out, const std::string& mesh, const std::vector<CollectionEntry>& components) {
+  if (components.empty()) throw InvalidArgument("write_reeb_graph_json: no components");
+  for (std::size_t c = 0; c < components.size(); ++c)
+    if (!components[c].ok || components[c].nodes.empty())
+      throw InvalidArgument("write_reeb_graph_json: component " + std::to_string(c) + " has no Reeb graph" +
+                            (components[c].error.empty() ? "" : " (" + components[c].error + ")"));
   long long vertices = 0, triangles = 0, cycles = 0, leaves = 0;
-  AnalysisTimings time;
-  for (const MeshAnalysis& r : components) {
-    const Mesh surface = original_surface(r.mesh);
-    vertices += surface.num_vertices();
-    triangles += surface.num_triangles();
-    cycles += r.reeb.independent_cycles();
-    for (const ReebNode& node : r.reeb.nodes) leaves += node.end == NodeType::Termination;
-    time.graph += r.timings.graph;
-    time.features += r.timings.features;
-    time.quotient += r.timings.quotient;
-    time.reeb += r.timings.reeb;
+  std::array<double, kTimeColumnCount> time{};
+  std::vector<long long> features;
+  for (const CollectionEntry& e : components) {
+    vertices += e.vertices;
+    triangles += e.faces;
+    cycles += independent_cycles(e);
+    leaves += leaf_count(e);
+    for (std::size_t k = 0; k < time.size(); ++k) time[k] += e.timings[k];
+    features.insert(features.end(), e.feature_points.begin(), e.feature_points.end());
   }
 
-  std::ofstream out = open_for_writing(path);
   JsonWriter json(out);
   json.begin_object()
-      .field("mesh", components.front().mesh.source)
+      .field("mesh", mesh)
       .field("components", static_cast<long long>(components.size()))
       .field("vertices", vertices)
       .field("triangles", triangles);
-  std::vector<long long> features;
-  for (const MeshAnalysis& r : components)
-    for (const Index v : r.features.vertices) features.push_back(r.mesh.source_index(v));
   json.key("feature_points").numbers(features);
 
+  const auto name = [](std::int32_t type) { return node_type_name(static_cast<NodeType>(type)); };
   json.key("nodes").begin_array();
+  long long first = 0;  // id of the component's node 0
   for (std::size_t c = 0; c < components.size(); ++c) {
-    const MeshAnalysis& r = components[c];
-    for (Index n = 0; n < r.reeb.num_nodes(); ++n) {
-      const ReebNode& node = r.reeb.nodes[static_cast<std::size_t>(n)];
+    const CollectionEntry& e = components[c];
+    for (std::size_t n = 0; n < static_cast<std::size_t>(e.num_nodes()); ++n) {
+      const std::int32_t* node = &e.nodes[n * kNodeColumnCount];
+      const double* geometry = &e.node_geometry[n * kGeomColumnCount];
       json.begin_object()
-          .field("id", static_cast<long long>(offset[c] + n))
+          .field("id", first + static_cast<long long>(n))
           .field("component", static_cast<long long>(c))
-          .field("type", node_type_name(node.type))
-          .field("end", node_type_name(node.end))
-          .field("birth_vertex", static_cast<long long>(r.mesh.source_index(node.birth_vertex)))
-          .field("vertex_count", static_cast<long long>(node.vertex_count))
-          .field("area", node.area)
-          .field("fq_min", node.fq_min)
-          .field("fq_max", node.fq_max);
-      json.key("barycenter").numbers(xyz(node.barycenter));
-      json.end_object();
+          .field("type", name(node[kNodeType]))
+          .field("end", name(node[kNodeEnd]))
+          .field("birth_vertex", static_cast<long long>(node[kNodeBirthVertex]))
+          .field("vertex_count", static_cast<long long>(node[kNodeVertexCount]))
+          .field("area", geometry[kGeomArea])
+          .field("fq_min", geometry[kGeomFqMin])
+          .field("fq_max", geometry[kGeomFqMax]);
+      json.key("barycenter")
+          .numbers(std::vector<double>(geometry + kGeomBarycenterX, geometry + kGeomBarycenterZ + 1));
+      json.key("attributes").begin_object();
+      for (std::size_t a = 0; a < kNodeAttributeNames.size(); ++a)
+        json.field(kNodeAttributeNames[a], e.node_attributes[n * kNodeAttributeCount + a]);
+      json.end_object().end_object();
     }
+    first += e.num_nodes();
   }
   json.end_array();
 
   json.key("edges").begin_array();
-  for (std::size_t c = 0; c < components.size(); ++c)
-    for (const auto& [a, b] : components[c].reeb.edges)
-      json.numbers(std::vector<long long>{offset[c] + a, offset[c] + b});
+  first = 0;
+  for (const CollectionEntry& e : components) {
+    for (std::size_t k = 0; k < e.edges.size(); k += 2)
+      json.numbers(std::vector<long long>{first + e.edges[k], first + e.edges[k + 1]});
+    first += e.num_nodes();
+  }
+  json.end_array();
+  json.key("edge_attributes").begin_array();
+  for (const CollectionEntry& e : components) {
+    for (std::size_t k = 0; k < static_cast<std::size_t>(e.num_edges()); ++k) {
+      json.begin_object();
+      for (std::size_t a = 0; a < kEdgeAttributeNames.size(); ++a)
+        json.field(kEdgeAttributeNames[a], e.edge_attributes[k * kEdgeAttributeCount + a]);
+      json.end_object();
+    }
+  }
   json.end_array();
   json.field("cycles", cycles).field("leaves", leaves);
 
   json.key("skeleton").begin_array();
-  for (const MeshAnalysis& r : components) {
-    for (const ReebNode& node : r.reeb.nodes) {
+  for (const CollectionEntry& e : components) {
+    for (std::size_t n = 0; n + 1 < e.skeleton_offset.size(); ++n) {
       json.begin_array();
-      for (const Vec3& p : node.skeleton) json.numbers(xyz(p));
+      for (auto p = e.skeleton_offset[n]; p < e.skeleton_offset[n + 1]; ++p) {
+        const double* xyz = &e.skeleton_points[3 * static_cast<std::size_t>(p)];
+        json.numbers(std::vector<double>(xyz, xyz + 3));
+      }
       json.end_array();
     }
   }
   json.end_array();
+  json.key("signature").begin_array();
+  for (const CollectionEntry& e : components) json.numbers(e.signature);
+  json.end_array();
 
   json.key("timings_ms")
       .begin_object()
-      .field("graph", time.graph)
-      .field("features", time.features)
-      .field("quotient", time.quotient)
-      .field("reeb", time.reeb)
+      .field("graph", time[kTimeGraph])
+      .field("features", time[kTimeFeatures])
+      .field("quotient", time[kTimeQuotient])
+      .field("reeb", time[kTimeReeb])
       .end_object();
   json.end_object();
   out << "\n";
+}
+
+void write_reeb_graph_json(const std::filesystem::path& path, const std::vector<MeshAnalysis>& components) {
+  check_components("write_reeb_graph_json", components);
+  std::vector<CollectionEntry> entries;
+  for (const MeshAnalysis& r : components) entries.push_back(make_collection_entry(r, compute_attributes(r)));
+  std::ofstream out = open_for_writing(path);
+  write_reeb_graph_json(out, components.front().mesh.source, entries);
   check_written(out, path);
 }
 

@@ -1,0 +1,48 @@
+// reeb info collection.h5: what a collection file holds (counts, classes,
+// failures) and where it came from (provenance, layout version).
+#include "reeb/cli.h"
+#include "reebkit/store/collection_file.h"
+
+#include <iostream>
+#include <map>
+
+namespace reebkit::cli {
+
+int run_info(const std::vector<std::string>& args) {
+  po::options_description options("options");
+  std::string path;
+  options.add_options()("collection", po::value(&path)->required(), "collection file written by reeb index");
+  po::positional_options_description positional;
+  positional.add("collection", 1);
+  po::variables_map vm;
+  if (!parse(args, "reeb info collection.h5", options, positional, vm)) return 0;
+
+  const CollectionReader reader(path);
+  const Provenance& provenance = reader.provenance();
+  std::int64_t ok = 0, nodes = 0, edges = 0;
+  std::map<std::string, std::int64_t> classes;
+  std::vector<std::pair<std::string, std::string>> failures;
+  for (std::int64_t i = 0; i < reader.size(); ++i) {
+    const CollectionEntry e = reader.entry(i);
+    if (e.ok) {
+      ++ok;
+      nodes += e.num_nodes();
+      edges += e.num_edges();
+    } else {
+      failures.emplace_back(e.name, e.error);
+    }
+    if (!e.class_label.empty()) ++classes[e.class_label];
+  }
+  std::cout << path << ": reebkit collection, layout " << kCollectionLayoutVersion << "\n"
+            << "  written by reebkit " << provenance.reebkit_version << " on " << provenance.created << "\n"
+            << "  command: " << provenance.command << "\n"
+            << "  options: " << provenance.options << "\n"
+            << reader.size() << " meshes: " << ok << " ok, " << failures.size() << " failed; " << nodes << " nodes, "
+            << edges << " edges\n";
+  std::cout << classes.size() << " classes" << (classes.empty() ? "" : ":") << "\n";
+  for (const auto& [name, count] : classes) std::cout << "  " << name << "\t" << count << "\n";
+  for (const auto& [name, reason] : failures) std::cout << "failed: " << name << ": " << reason << "\n";
+  return 0;
+}
+
+}  // namespace reebkit::cli
