@@ -129,6 +129,17 @@ TEST(FeaturePoints, LargerEpsilonMergesNearbyExtremities) {
   EXPECT_EQ(extract_feature_points(g, options).vertices.size(), 1u);
 }
 
+TEST(FeaturePoints, SymmetricMeshesWithTiedDiameterEndsStillHaveFeaturePoints) {
+  // Small tori have many vertex pairs at the same largest distance. The
+  // diameter ends must then be extrema by the same (value, id) order as the
+  // extrema themselves, or the relaxed intersection can come out empty.
+  for (int major = 12; major <= 24; ++major)
+    for (int minor = 6; minor <= 12; ++minor) {
+      const FeaturePoints fp = extract_feature_points(build_mesh_graph(make_torus(major, minor)));
+      EXPECT_FALSE(fp.vertices.empty()) << "torus " << major << " x " << minor;
+    }
+}
+
 TEST(FeaturePoints, RejectsBadInput) {
   const MeshGraph g = build_mesh_graph(make_cube());
   FeatureOptions bad_start;

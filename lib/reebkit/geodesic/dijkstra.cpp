@@ -93,8 +93,9 @@ const DistanceField& DijkstraSolver::run(const std::vector<Index>& sources, cons
     const auto [d, v] = pop();
     if (d > dist[v]) continue;  // stale entry
     settled_.push_back(v);
-    if (d > field_.max_distance || field_.farthest == kInvalidIndex ||
-        (d == field_.max_distance && v < field_.farthest)) {
+    // Vertices settle in (distance, id) order, so the last one at the largest
+    // distance is the maximum by (distance, id), as sos_less orders them.
+    if (d >= field_.max_distance) {
       field_.max_distance = d;
       field_.farthest = v;
     }
