@@ -497,12 +497,33 @@ struct CollectionWriter::Impl {
   void commit();
 };
 
+namespace {
+
+// Rows are only appended, so each dataset needs just its last chunk cached:
+// a 64 KiB chunk cache per dataset (default 1 MiB) and a metadata cache of at
+// most 2 MiB (default: grows to 32 MiB with the chunk index) keep the
+// writer's memory flat however long the collection.
+void limit_caches(H5::FileAccPropList& access_list) {
+  access_list.setCache(0, 521, 64 * 1024, 1.0);
+  H5AC_cache_config_t config;
+  config.version = H5AC__CURR_CACHE_CONFIG_VERSION;
+  H5Pget_mdc_config(access_list.getId(), &config);
+  config.set_initial_size = true;
+  config.initial_size = 1 << 20;
+  config.min_size = 1 << 20;
+  config.max_size = 2 << 20;
+  H5Pset_mdc_config(access_list.getId(), &config);
+}
+
+}  // namespace
+
 void CollectionWriter::Impl::create(const fs::path& target, const Provenance& provenance) {
   H5::FileCreatPropList create_list;
   // Never reuse freed space: see the top of the file.
   H5Pset_file_space_strategy(create_list.getId(), H5F_FSPACE_STRATEGY_NONE, false, 1);
   H5::FileAccPropList access_list;
   access_list.setLibverBounds(H5F_LIBVER_LATEST, H5F_LIBVER_LATEST);  // SWMR needs the 1.10 format
+  limit_caches(access_list);
   file = H5::H5File(target.string(), H5F_ACC_TRUNC, create_list, access_list);
 
   const int layout = kCollectionLayoutVersion;
