@@ -35,37 +35,6 @@ const DistanceField& DijkstraSolver::run(const std::vector<Index>& sources, cons
   field_.max_distance = 0.0;
   field_.reached = 0;
 
-  // 4-ary min-heap of (distance, vertex) with lazy deletion: ties pop by id.
-  // Four children per node halve the depth of a binary heap, and the
-  // siblings share a cache line.
-  const auto push = [this](double d, Index v) {
-    heap_.emplace_back(d, v);
-    std::size_t i = heap_.size() - 1;
-    while (i > 0) {
-      const std::size_t parent = (i - 1) / 4;
-      if (!(heap_[i] < heap_[parent])) break;
-      std::swap(heap_[i], heap_[parent]);
-      i = parent;
-    }
-  };
-  const auto pop = [this]() {
-    const std::pair<double, Index> top = heap_.front();
-    heap_.front() = heap_.back();
-    heap_.pop_back();
-    const std::size_t size = heap_.size();
-    std::size_t i = 0;
-    while (true) {
-      const std::size_t first = 4 * i + 1;
-      if (first >= size) break;
-      std::size_t best = first;
-      for (std::size_t c = first + 1; c < std::min(first + 4, size); ++c)
-        if (heap_[c] < heap_[best]) best = c;
-      if (!(heap_[best] < heap_[i])) break;
-      std::swap(heap_[i], heap_[best]);
-      i = best;
-    }
-    return top;
-  };
   const Index* labels = options.labels ? options.labels->data() : nullptr;
   if (labels && options.labels->size() != static_cast<std::size_t>(n))
     throw InvalidArgument("dijkstra: " + std::to_string(options.labels->size()) + " vertex labels for " +
@@ -83,19 +52,19 @@ const DistanceField& DijkstraSolver::run(const std::vector<Index>& sources, cons
     dist[v] = 0.0;
     nearest[v] = static_cast<Index>(s);
     touched_.push_back(v);
-    push(0.0, v);
+    heap_.push(0.0, v);
   }
 
   const Index* offset = graph_.offset.data();
   const Index* neighbor = graph_.neighbor.data();
   const double* length = graph_.length.data();
   while (!heap_.empty()) {
-    const auto [d, v] = pop();
+    const auto [d, v] = heap_.pop();
     if (d > dist[v]) continue;  // stale entry
     settled_.push_back(v);
-    // Vertices settle in (distance, id) order, so the last one at the largest
-    // distance is the maximum by (distance, id), as sos_less orders them.
-    if (d >= field_.max_distance) {
+    // The maximum by (distance, id), as sos_less orders vertices.
+    if (field_.farthest == kInvalidIndex || d > field_.max_distance ||
+        (d == field_.max_distance && v > field_.farthest)) {
       field_.max_distance = d;
       field_.farthest = v;
     }
@@ -107,7 +76,7 @@ const DistanceField& DijkstraSolver::run(const std::vector<Index>& sources, cons
         if (dist[w] == std::numeric_limits<double>::infinity()) touched_.push_back(w);
         dist[w] = dw;
         nearest[w] = nearest[v];
-        push(dw, w);
+        heap_.push(dw, w);
       }
     }
   }

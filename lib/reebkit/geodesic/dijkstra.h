@@ -2,6 +2,7 @@
 // ("Moore-Dijkstra", Tierny et al. 2006, section 4.1.1).
 #pragma once
 
+#include "reebkit/geodesic/radix_heap.h"
 #include "reebkit/mesh/mesh_graph.h"
 
 #include <limits>
@@ -32,8 +33,9 @@ struct DistanceField {
 };
 
 /// Shortest-path distances from the nearest of `sources` (vertex ids) to
-/// every vertex. Vertices leave the heap in (distance, vertex id) order, so
-/// the result, nearest sources included, is deterministic. O(E log V).
+/// every vertex, with a radix heap (radix_heap.h). Deterministic: the same
+/// inputs give the same result, nearest sources included (between sources at
+/// exactly the same distance, the heap's order decides). O(E + 64 V).
 DistanceField dijkstra(const MeshGraph& graph, const std::vector<Index>& sources,
                        const DijkstraOptions& options = {});
 
@@ -61,7 +63,7 @@ class DijkstraSolver {
   DistanceField field_;
   std::vector<Index> settled_;
   std::vector<Index> touched_;  // vertices whose distance is finite
-  std::vector<std::pair<double, Index>> heap_;
+  RadixHeap heap_;
 };
 
 }  // namespace reebkit
