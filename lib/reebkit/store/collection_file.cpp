@@ -89,27 +89,28 @@ struct Table {
   /// Appends `n` rows from `data` (row-major).
   void append(const void* data, hsize_t n) {
     if (n == 0) return;
-    const hsize_t new_rows = rows + n;
-    const hsize_t extent[2] = {new_rows, width};
+    const hsize_t extent[2] = {rows + n, width};
     dataset.extend(extent);
-    H5::DataSpace file_space = dataset.getSpace();
-    const hsize_t start[2] = {rows, 0};
-    const hsize_t count[2] = {n, width};
-    file_space.selectHyperslab(H5S_SELECT_SET, count, start);
-    const H5::DataSpace memory_space(rank(), count);
+    const auto [file_space, memory_space] = select_rows(rows, n);
     dataset.write(data, type, memory_space, file_space);
-    rows = new_rows;
+    rows += n;
   }
 
   /// Reads rows [first, first + n) into `out` (row-major).
   void read(void* out, hsize_t first, hsize_t n) const {
     if (n == 0) return;
+    const auto [file_space, memory_space] = select_rows(first, n);
+    dataset.read(out, type, memory_space, file_space);
+  }
+
+  /// The file space selecting rows [first, first + n), and a memory space of
+  /// that shape.
+  std::pair<H5::DataSpace, H5::DataSpace> select_rows(hsize_t first, hsize_t n) const {
     H5::DataSpace file_space = dataset.getSpace();
     const hsize_t start[2] = {first, 0};
     const hsize_t count[2] = {n, width};
     file_space.selectHyperslab(H5S_SELECT_SET, count, start);
-    const H5::DataSpace memory_space(rank(), count);
-    dataset.read(out, type, memory_space, file_space);
+    return {file_space, H5::DataSpace(rank(), count)};
   }
 
   template <typename T>
