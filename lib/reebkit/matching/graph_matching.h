@@ -1,7 +1,8 @@
 // Distance between two attributed Reeb graphs by attribute-based graph
 // matching (issue 5): node-to-node costs from attribute differences and local
 // structure, node insertion/deletion costs, solved as an assignment problem
-// on the padded square cost matrix, optionally refined for edge consistency.
+// (matching/assignment.h) on the padded matrix, optionally refined for edge
+// consistency.
 #pragma once
 
 #include "reebkit/store/collection_file.h"
@@ -11,16 +12,32 @@
 
 namespace reebkit {
 
-/// The cost model (README: "Graph matching"). Weights are documented with
-/// the measurement that chose them.
+/// The cost model (README: "Graph matching"). A node i carries the weight
+/// w_i = relative area + min_node_weight. Matching node i of A to node j of
+/// B costs (w_i + w_j) / 2 * (attribute_weight * a(i, j) + structure_weight
+/// * s(i, j) + edge_weight * e(i, j)), leaving node i unmatched costs
+/// unmatched_cost * w_i, and the distance is the total cost of the cheapest
+/// correspondence over (W_A + W_B), W = sum of the weights, so it lies in
+/// [0, unmatched_cost]. a, s and e are in [0, 1]:
+/// - a: mean absolute difference of sqrt(relative area), f_q min, f_q max,
+///   geodesic extent and mean radius (attributes/graph_attributes.h);
+/// - s: mean of the relative degree difference |d_i - d_j| / max(d_i, d_j),
+///   the start and end types differing (0 or 1 each) and the difference of
+///   sqrt(sum of the neighbours' relative areas);
+/// - e: the share of matched neighbours of i and j whose partners are not
+///   neighbours of j and i (edge consistency, from the correspondence).
+/// Defaults: the best leave-one-out nearest-neighbour rate on SHREC07
+/// (results/matching_weights.md).
 struct MatchingOptions {
-  /// Filled in by the implementation: weights of the attribute differences,
-  /// of the local structure (degree, type, neighbours), the cost of leaving a
-  /// node unmatched, and whether to refine for edge consistency.
-  double attribute_weight = 1.0;
-  double structure_weight = 1.0;
-  double unmatched_cost = 1.0;
-  bool refine = true;
+  double attribute_weight = 1.0;   ///< weight of a(i, j)
+  double structure_weight = 1.0;   ///< weight of s(i, j)
+  double edge_weight = 0.5;        ///< weight of e(i, j)
+  double unmatched_cost = 0.5;     ///< cost of deleting or inserting a node, per unit of node weight
+  double min_node_weight = 0.01;   ///< added to the relative area so that area-less nodes still count
+  /// Rounds of edge-consistency refinement: the assignment is solved again
+  /// with e(i, j) from the previous correspondence (the first solve has e =
+  /// 0), until it no longer changes. 0: one solve, node costs only.
+  int refine_rounds = 2;
 };
 
 struct GraphMatch {
@@ -31,9 +48,30 @@ struct GraphMatch {
   std::vector<std::int32_t> correspondence;
 };
 
+/// The per-node arrays the matcher reads, computed once per graph.
+struct MatchableGraph {
+  /// Columns of `features`, all in [0, ~1].
+  enum Feature : int { kSqrtArea, kFqMin, kFqMax, kExtent, kRadius, kSqrtNeighbourArea, kDegree, kStartType, kEndType,
+                       kFeatureCount };
+  std::int32_t num_nodes = 0;
+  std::vector<double> features;           ///< num_nodes x kFeatureCount, row-major
+  std::vector<double> relative_area;      ///< per node
+  std::vector<std::int32_t> neighbour_offset;  ///< num_nodes + 1, into neighbours (CSR)
+  std::vector<std::int32_t> neighbours;
+  std::vector<char> adjacent;             ///< num_nodes x num_nodes, 1 where an edge joins the nodes
+};
+
+/// The matchable form of an entry's graph.
+/// \pre entry.ok; throws InvalidArgument otherwise.
+MatchableGraph make_matchable_graph(const CollectionEntry& entry);
+
 /// Matches the graphs of two collection entries (CollectionEntry holds the
 /// attributed graph; make_collection_entry builds one from an analysis).
 /// \pre both entries are ok (have a graph); throws InvalidArgument otherwise.
 GraphMatch match_graphs(const CollectionEntry& a, const CollectionEntry& b, const MatchingOptions& options = {});
+
+/// The same on precomputed graphs: allocates nothing but the correspondence
+/// once the calling thread's buffers have grown (for all-pairs distances).
+GraphMatch match_graphs(const MatchableGraph& a, const MatchableGraph& b, const MatchingOptions& options = {});
 
 }  // namespace reebkit

@@ -1,0 +1,87 @@
+#include "reebkit/matching/assignment.h"
+
+#include "reebkit/core/error.h"
+
+#include <algorithm>
+#include <limits>
+#include <string>
+
+namespace reebkit {
+
+// Rows are added one at a time; each addition grows a shortest-path tree of
+// alternating paths over the reduced costs cost - u - v (Dijkstra without a
+// heap: O(cols) per step) until it reaches a free column, then augments and
+// updates the potentials so that reduced costs stay >= 0. Column 0 of the
+// internal arrays is a virtual column holding the row being added.
+double AssignmentSolver::solve(const double* cost, int rows, int cols, std::vector<std::int32_t>& assignment) {
+  if (rows < 0 || rows > cols)
+    throw InvalidArgument("solve_assignment: needs 0 <= rows <= columns, got " + std::to_string(rows) + " x " +
+                          std::to_string(cols));
+  const auto n = static_cast<std::size_t>(cols) + 1;
+  u_.assign(static_cast<std::size_t>(rows) + 1, 0.0);
+  v_.assign(n, 0.0);
+  row_of_col_.assign(n, 0);  // 1-based row of each column, 0 = free
+  way_.assign(n, 0);
+  min_slack_.resize(n);
+  used_.resize(n);
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  for (int i = 1; i <= rows; ++i) {
+    row_of_col_[0] = i;
+    std::size_t j0 = 0;
+    std::fill(min_slack_.begin(), min_slack_.end(), kInf);
+    std::fill(used_.begin(), used_.end(), char{0});
+    do {
+      used_[j0] = 1;
+      const int i0 = row_of_col_[j0];
+      const double* row = cost + static_cast<std::ptrdiff_t>(i0 - 1) * cols;
+      const double ui0 = u_[static_cast<std::size_t>(i0)];
+      double delta = kInf;
+      std::size_t j1 = 0;
+      for (std::size_t j = 1; j < n; ++j) {
+        if (used_[j]) continue;
+        const double reduced = row[j - 1] - ui0 - v_[j];
+        if (reduced < min_slack_[j]) {
+          min_slack_[j] = reduced;
+          way_[j] = static_cast<std::int32_t>(j0);
+        }
+        if (min_slack_[j] < delta) {
+          delta = min_slack_[j];
+          j1 = j;
+        }
+      }
+      for (std::size_t j = 0; j < n; ++j) {
+        if (used_[j]) {
+          u_[static_cast<std::size_t>(row_of_col_[j])] += delta;
+          v_[j] -= delta;
+        } else {
+          min_slack_[j] -= delta;
+        }
+      }
+      j0 = j1;
+    } while (row_of_col_[j0] != 0);
+    do {  // augment along the path back to the virtual column
+      const auto j1 = static_cast<std::size_t>(way_[j0]);
+      row_of_col_[j0] = row_of_col_[j1];
+      j0 = j1;
+    } while (j0 != 0);
+  }
+  assignment.assign(static_cast<std::size_t>(rows), -1);
+  double total = 0.0;
+  for (std::size_t j = 1; j < n; ++j) {
+    if (row_of_col_[j] == 0) continue;
+    const int i = row_of_col_[j] - 1;
+    assignment[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(j - 1);
+    total += cost[static_cast<std::ptrdiff_t>(i) * cols + static_cast<std::ptrdiff_t>(j - 1)];
+  }
+  return total;
+}
+
+double solve_assignment(const std::vector<double>& cost, int rows, int cols, std::vector<std::int32_t>& assignment) {
+  if (cost.size() != static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols))
+    throw InvalidArgument("solve_assignment: " + std::to_string(cost.size()) + " costs for a " + std::to_string(rows) +
+                          " x " + std::to_string(cols) + " matrix");
+  AssignmentSolver solver;
+  return solver.solve(cost.data(), rows, cols, assignment);
+}
+
+}  // namespace reebkit

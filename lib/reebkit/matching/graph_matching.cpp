@@ -1,0 +1,203 @@
+#include "reebkit/matching/graph_matching.h"
+
+#include "reebkit/core/error.h"
+#include "reebkit/matching/assignment.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace reebkit {
+
+namespace {
+
+using F = MatchableGraph::Feature;
+
+void require_ok(const CollectionEntry& entry) {
+  if (!entry.ok) throw InvalidArgument("match_graphs: entry '" + entry.name + "' has no graph (" + entry.error + ")");
+}
+
+/// a(i, j) + s(i, j) of the cost model, weighted (MatchingOptions).
+double node_dissimilarity(const double* x, const double* y, const MatchingOptions& o) {
+  const double attributes = (std::abs(x[F::kSqrtArea] - y[F::kSqrtArea]) + std::abs(x[F::kFqMin] - y[F::kFqMin]) +
+                             std::abs(x[F::kFqMax] - y[F::kFqMax]) + std::abs(x[F::kExtent] - y[F::kExtent]) +
+                             std::abs(x[F::kRadius] - y[F::kRadius])) / 5.0;
+  const double max_degree = std::max({x[F::kDegree], y[F::kDegree], 1.0});
+  const double structure = (std::abs(x[F::kDegree] - y[F::kDegree]) / max_degree +
+                            (x[F::kStartType] != y[F::kStartType] ? 1.0 : 0.0) +
+                            (x[F::kEndType] != y[F::kEndType] ? 1.0 : 0.0) +
+                            std::abs(x[F::kSqrtNeighbourArea] - y[F::kSqrtNeighbourArea])) / 4.0;
+  return o.attribute_weight * attributes + o.structure_weight * structure;
+}
+
+/// e(i, j): the share of the matched neighbours of i (in a) and of j (in b)
+/// whose partners are not neighbours of j and i. `forward` maps a's nodes to
+/// b's, `backward` b's to a's (-1: unmatched).
+double edge_inconsistency(const MatchableGraph& a, const MatchableGraph& b, std::int32_t i, std::int32_t j,
+                          const std::vector<std::int32_t>& forward, const std::vector<std::int32_t>& backward) {
+  const auto ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
+  int bad = 0, total = 0;
+  for (std::int32_t k = a.neighbour_offset[ui]; k < a.neighbour_offset[ui + 1]; ++k) {
+    const std::int32_t partner = forward[static_cast<std::size_t>(a.neighbours[static_cast<std::size_t>(k)])];
+    ++total;
+    if (partner >= 0 && !b.adjacent[uj * static_cast<std::size_t>(b.num_nodes) + static_cast<std::size_t>(partner)])
+      ++bad;
+  }
+  for (std::int32_t k = b.neighbour_offset[uj]; k < b.neighbour_offset[uj + 1]; ++k) {
+    const std::int32_t partner = backward[static_cast<std::size_t>(b.neighbours[static_cast<std::size_t>(k)])];
+    ++total;
+    if (partner >= 0 && !a.adjacent[ui * static_cast<std::size_t>(a.num_nodes) + static_cast<std::size_t>(partner)])
+      ++bad;
+  }
+  return total ? static_cast<double>(bad) / total : 0.0;
+}
+
+/// Buffers reused by every match on a thread.
+struct Workspace {
+  std::vector<double> dissimilarity;  // n x m
+  std::vector<double> cost;           // n x (m + n)
+  std::vector<std::int32_t> assignment, forward, backward, previous;
+  AssignmentSolver solver;
+};
+
+/// Whether a should give the rows of the assignment: the graph with fewer
+/// nodes, ties broken by the feature arrays and then the adjacency, so that
+/// match(a, b) and match(b, a) solve the same problem (exact symmetry).
+bool rows_first(const MatchableGraph& a, const MatchableGraph& b) {
+  if (a.num_nodes != b.num_nodes) return a.num_nodes < b.num_nodes;
+  if (a.features != b.features) return a.features < b.features;
+  return a.adjacent <= b.adjacent;
+}
+
+/// The match with a's nodes as rows. \pre a.num_nodes <= b.num_nodes.
+/// Padded problem reduced to rows: matching i to j costs
+/// pair(i, j) - delete(i) - insert(j), and each row i has its own "delete"
+/// column of cost 0; the optimum plus the sum of all deletion and insertion
+/// costs is the optimum of the (n + m) x (n + m) padded matrix.
+double match_rows(const MatchableGraph& a, const MatchableGraph& b, const MatchingOptions& o, Workspace& w) {
+  const std::int32_t n = a.num_nodes, m = b.num_nodes;
+  const auto un = static_cast<std::size_t>(n), um = static_cast<std::size_t>(m);
+  const auto cols = static_cast<std::size_t>(m + n);
+  const auto weight = [&](const MatchableGraph& g, std::size_t i) { return g.relative_area[i] + o.min_node_weight; };
+  double total_weight = 0.0, all_unmatched = 0.0;
+  for (std::size_t i = 0; i < un; ++i) total_weight += weight(a, i);
+  for (std::size_t j = 0; j < um; ++j) total_weight += weight(b, j);
+  all_unmatched = o.unmatched_cost * total_weight;
+
+  w.dissimilarity.resize(un * um);
+  for (std::size_t i = 0; i < un; ++i) {
+    const double* x = &a.features[i * MatchableGraph::kFeatureCount];
+    for (std::size_t j = 0; j < um; ++j)
+      w.dissimilarity[i * um + j] = node_dissimilarity(x, &b.features[j * MatchableGraph::kFeatureCount], o);
+  }
+  w.cost.resize(un * cols);
+  w.forward.assign(un, -1);
+  w.backward.assign(um, -1);
+  constexpr double kForbidden = 1e12;  // finite: the solver needs finite costs
+  const int rounds = std::max(0, o.refine_rounds);
+  for (int round = 0; round <= rounds; ++round) {
+    for (std::size_t i = 0; i < un; ++i) {
+      const double wi = weight(a, i);
+      double* row = &w.cost[i * cols];
+      for (std::size_t j = 0; j < um; ++j) {
+        double d = w.dissimilarity[i * um + j];
+        if (round > 0)
+          d += o.edge_weight * edge_inconsistency(a, b, static_cast<std::int32_t>(i), static_cast<std::int32_t>(j),
+                                                  w.forward, w.backward);
+        const double wj = weight(b, j);
+        row[j] = 0.5 * (wi + wj) * d - o.unmatched_cost * (wi + wj);
+      }
+      std::fill(row + um, row + cols, kForbidden);
+      row[um + i] = 0.0;
+    }
+    w.solver.solve(w.cost.data(), n, static_cast<int>(cols), w.assignment);
+    w.previous.swap(w.forward);
+    w.forward.assign(un, -1);
+    w.backward.assign(um, -1);
+    for (std::size_t i = 0; i < un; ++i) {
+      const std::int32_t j = w.assignment[i];
+      if (j < m) w.forward[i] = j, w.backward[static_cast<std::size_t>(j)] = static_cast<std::int32_t>(i);
+    }
+    if (round > 0 && w.forward == w.previous) break;
+  }
+  // The cost of the final correspondence, its edge term included.
+  double total = all_unmatched;
+  for (std::size_t i = 0; i < un; ++i) {
+    const std::int32_t j = w.forward[i];
+    if (j < 0) continue;
+    const auto uj = static_cast<std::size_t>(j);
+    double d = w.dissimilarity[i * um + uj];
+    if (o.edge_weight > 0.0)
+      d += o.edge_weight * edge_inconsistency(a, b, static_cast<std::int32_t>(i), j, w.forward, w.backward);
+    const double wi = weight(a, i), wj = weight(b, uj);
+    total += 0.5 * (wi + wj) * d - o.unmatched_cost * (wi + wj);
+  }
+  return total_weight > 0.0 ? std::max(0.0, total) / total_weight : 0.0;
+}
+
+}  // namespace
+
+MatchableGraph make_matchable_graph(const CollectionEntry& entry) {
+  require_ok(entry);
+  MatchableGraph g;
+  g.num_nodes = entry.num_nodes();
+  const auto n = static_cast<std::size_t>(g.num_nodes);
+  g.relative_area.resize(n);
+  g.neighbour_offset.assign(n + 1, 0);
+  g.adjacent.assign(n * n, 0);
+  for (std::int32_t e = 0; e < entry.num_edges(); ++e) {
+    const auto u = static_cast<std::size_t>(entry.edges[2 * static_cast<std::size_t>(e)]);
+    const auto v = static_cast<std::size_t>(entry.edges[2 * static_cast<std::size_t>(e) + 1]);
+    ++g.neighbour_offset[u + 1];
+    ++g.neighbour_offset[v + 1];
+    g.adjacent[u * n + v] = g.adjacent[v * n + u] = 1;
+  }
+  for (std::size_t i = 0; i < n; ++i) g.neighbour_offset[i + 1] += g.neighbour_offset[i];
+  g.neighbours.resize(static_cast<std::size_t>(g.neighbour_offset[n]));
+  std::vector<std::int32_t> fill(g.neighbour_offset.begin(), g.neighbour_offset.end() - 1);
+  for (std::int32_t e = 0; e < entry.num_edges(); ++e) {
+    const std::int32_t u = entry.edges[2 * static_cast<std::size_t>(e)], v = entry.edges[2 * static_cast<std::size_t>(e) + 1];
+    g.neighbours[static_cast<std::size_t>(fill[static_cast<std::size_t>(u)]++)] = v;
+    g.neighbours[static_cast<std::size_t>(fill[static_cast<std::size_t>(v)]++)] = u;
+  }
+  const auto attribute = [&](std::size_t i, NodeAttribute c) { return entry.node_attributes[i * kNodeAttributeCount + c]; };
+  for (std::size_t i = 0; i < n; ++i) g.relative_area[i] = attribute(i, kNodeRelativeArea);
+  g.features.resize(n * MatchableGraph::kFeatureCount);
+  for (std::size_t i = 0; i < n; ++i) {
+    double neighbour_area = 0.0;
+    for (std::int32_t k = g.neighbour_offset[i]; k < g.neighbour_offset[i + 1]; ++k)
+      neighbour_area += g.relative_area[static_cast<std::size_t>(g.neighbours[static_cast<std::size_t>(k)])];
+    double* x = &g.features[i * MatchableGraph::kFeatureCount];
+    x[F::kSqrtArea] = std::sqrt(std::max(0.0, g.relative_area[i]));
+    x[F::kFqMin] = attribute(i, kNodeFqMin);
+    x[F::kFqMax] = attribute(i, kNodeFqMax);
+    x[F::kExtent] = attribute(i, kNodeGeodesicExtent);
+    x[F::kRadius] = attribute(i, kNodeMeanRadius);
+    x[F::kSqrtNeighbourArea] = std::sqrt(neighbour_area);
+    x[F::kDegree] = static_cast<double>(g.neighbour_offset[i + 1] - g.neighbour_offset[i]);
+    x[F::kStartType] = attribute(i, kNodeStartType);
+    x[F::kEndType] = attribute(i, kNodeEndType);
+  }
+  return g;
+}
+
+GraphMatch match_graphs(const MatchableGraph& a, const MatchableGraph& b, const MatchingOptions& options) {
+  thread_local Workspace workspace;
+  GraphMatch match;
+  match.correspondence.assign(static_cast<std::size_t>(a.num_nodes), -1);
+  if (rows_first(a, b)) {
+    match.distance = match_rows(a, b, options, workspace);
+    std::copy(workspace.forward.begin(), workspace.forward.end(), match.correspondence.begin());
+  } else {
+    match.distance = match_rows(b, a, options, workspace);
+    for (std::size_t j = 0; j < workspace.forward.size(); ++j)
+      if (workspace.forward[j] >= 0) match.correspondence[static_cast<std::size_t>(workspace.forward[j])] = static_cast<std::int32_t>(j);
+  }
+  return match;
+}
+
+GraphMatch match_graphs(const CollectionEntry& a, const CollectionEntry& b, const MatchingOptions& options) {
+  return match_graphs(make_matchable_graph(a), make_matchable_graph(b), options);
+}
+
+}  // namespace reebkit

@@ -1,0 +1,177 @@
+#include "reebkit/matching/graph_matching.h"
+
+#include "reebkit/collection/collection_entry.h"
+#include "reebkit/core/error.h"
+#include "reebkit/mesh/shapes.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <numeric>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace reebkit {
+namespace {
+
+CollectionEntry entry_of(Mesh mesh, const std::string& name) {
+  const MeshAnalysis analysis = analyze_mesh(std::move(mesh));
+  CollectionEntry entry = make_collection_entry(analysis, compute_attributes(analysis));
+  entry.name = name;
+  return entry;
+}
+
+/// Generated shapes of different classes: urchins with 3, 5 and 8 arms, a torus.
+const std::vector<CollectionEntry>& shapes() {
+  static const std::vector<CollectionEntry> all = [] {
+    std::vector<CollectionEntry> v;
+    for (const int arms : {3, 5, 8}) {
+      StarOptions star;
+      star.arms = arms;
+      star.levels = 4;
+      v.push_back(entry_of(make_star(star), "star" + std::to_string(arms)));
+    }
+    v.push_back(entry_of(make_torus(48, 16), "torus"));
+    return v;
+  }();
+  return all;
+}
+
+/// The same graph with its nodes renumbered by `order` (new node k is old
+/// node order[k]) and its edges listed in reverse with swapped ends.
+CollectionEntry renumbered(const CollectionEntry& e, const std::vector<std::int32_t>& order) {
+  CollectionEntry r = e;
+  const auto n = static_cast<std::size_t>(e.num_nodes());
+  std::vector<std::int32_t> new_id(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto old = static_cast<std::size_t>(order[k]);
+    new_id[old] = static_cast<std::int32_t>(k);
+    std::copy_n(&e.nodes[old * kNodeColumnCount], kNodeColumnCount, &r.nodes[k * kNodeColumnCount]);
+    std::copy_n(&e.node_geometry[old * kGeomColumnCount], kGeomColumnCount, &r.node_geometry[k * kGeomColumnCount]);
+    std::copy_n(&e.node_attributes[old * kNodeAttributeCount], kNodeAttributeCount,
+                &r.node_attributes[k * kNodeAttributeCount]);
+  }
+  const auto m = static_cast<std::size_t>(e.num_edges());
+  for (std::size_t k = 0; k < m; ++k) {
+    const std::size_t old = m - 1 - k;
+    r.edges[2 * k] = new_id[static_cast<std::size_t>(e.edges[2 * old + 1])];
+    r.edges[2 * k + 1] = new_id[static_cast<std::size_t>(e.edges[2 * old])];
+    std::copy_n(&e.edge_attributes[old * kEdgeAttributeCount], kEdgeAttributeCount,
+                &r.edge_attributes[k * kEdgeAttributeCount]);
+  }
+  return r;
+}
+
+/// Continuous node attributes multiplied by 1 + U(-amount, amount)
+/// (relative areas, f_q range, extents, radii; not degrees and types).
+CollectionEntry jittered(const CollectionEntry& e, double amount, unsigned seed) {
+  CollectionEntry r = e;
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> factor(1.0 - amount, 1.0 + amount);
+  for (std::size_t i = 0; i < static_cast<std::size_t>(e.num_nodes()); ++i)
+    for (const NodeAttribute c : {kNodeRelativeArea, kNodeFqMin, kNodeFqMax, kNodeGeodesicExtent, kNodeMeanRadius})
+      r.node_attributes[i * kNodeAttributeCount + c] *= factor(random);
+  return r;
+}
+
+TEST(GraphMatching, ShapesHaveGraphs) {
+  for (const auto& e : shapes()) {
+    ASSERT_TRUE(e.ok) << e.name;
+    EXPECT_GE(e.num_nodes(), 1) << e.name;
+  }
+  // A k-armed urchin has a leaf per arm; the torus graph one cycle.
+  EXPECT_EQ(leaf_count(shapes()[0]), 3);
+  EXPECT_EQ(leaf_count(shapes()[1]), 5);
+  EXPECT_EQ(leaf_count(shapes()[2]), 8);
+  EXPECT_EQ(independent_cycles(shapes()[3]), 1);
+}
+
+TEST(GraphMatching, SelfDistanceIsZeroWithIdentity) {
+  for (const auto& e : shapes()) {
+    const GraphMatch m = match_graphs(e, e);
+    EXPECT_NEAR(m.distance, 0.0, 1e-12) << e.name;
+    ASSERT_EQ(m.correspondence.size(), static_cast<std::size_t>(e.num_nodes()));
+    // Identity, up to nodes that are exact twins (same attributes and degree).
+    const MatchableGraph g = make_matchable_graph(e);
+    for (std::size_t i = 0; i < m.correspondence.size(); ++i) {
+      const auto j = static_cast<std::size_t>(m.correspondence[i]);
+      ASSERT_LT(m.correspondence[i], e.num_nodes());
+      ASSERT_GE(m.correspondence[i], 0);
+      if (j == i) continue;
+      EXPECT_TRUE(std::equal(&g.features[i * MatchableGraph::kFeatureCount],
+                             &g.features[(i + 1) * MatchableGraph::kFeatureCount],
+                             &g.features[j * MatchableGraph::kFeatureCount]))
+          << e.name << ": node " << i << " matched to a different node " << j;
+    }
+  }
+}
+
+TEST(GraphMatching, SymmetricWithInverseCorrespondence) {
+  for (const bool refine : {false, true}) {
+    MatchingOptions options;
+    options.refine_rounds = refine ? 2 : 0;
+    for (const auto& a : shapes())
+      for (const auto& b : shapes()) {
+        const GraphMatch ab = match_graphs(a, b, options), ba = match_graphs(b, a, options);
+        EXPECT_EQ(ab.distance, ba.distance) << a.name << " vs " << b.name;
+        EXPECT_GE(ab.distance, 0.0);
+        EXPECT_LE(ab.distance, options.unmatched_cost + 1e-12);
+        for (std::size_t i = 0; i < ab.correspondence.size(); ++i) {
+          if (ab.correspondence[i] < 0) continue;
+          EXPECT_EQ(ba.correspondence[static_cast<std::size_t>(ab.correspondence[i])], static_cast<std::int32_t>(i));
+        }
+      }
+  }
+}
+
+TEST(GraphMatching, InvariantToNodeRenumbering) {
+  std::mt19937 random(11);
+  for (const auto& a : shapes()) {
+    std::vector<std::int32_t> order(static_cast<std::size_t>(a.num_nodes()));
+    std::iota(order.begin(), order.end(), 0);
+    std::shuffle(order.begin(), order.end(), random);
+    const CollectionEntry p = renumbered(a, order);
+    for (const auto& b : shapes()) {
+      const GraphMatch original = match_graphs(a, b), permuted = match_graphs(p, b);
+      EXPECT_NEAR(permuted.distance, original.distance, 1e-12) << a.name << " vs " << b.name;
+      if (a.name == b.name) continue;  // twins may swap in a self-match
+      for (std::size_t k = 0; k < order.size(); ++k)
+        EXPECT_EQ(permuted.correspondence[k], original.correspondence[static_cast<std::size_t>(order[k])])
+            << a.name << " vs " << b.name << ", node " << k;
+    }
+  }
+}
+
+TEST(GraphMatching, PerturbedCopyIsCloserThanAnotherClass) {
+  const auto& all = shapes();
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const CollectionEntry copy = jittered(all[i], 0.02, static_cast<unsigned>(i) + 1);
+    const double to_copy = match_graphs(all[i], copy).distance;
+    EXPECT_GT(to_copy, 0.0) << all[i].name;
+    for (std::size_t j = 0; j < all.size(); ++j) {
+      if (j == i) continue;
+      EXPECT_LT(to_copy, match_graphs(all[i], all[j]).distance) << all[i].name << " vs " << all[j].name;
+      EXPECT_LT(to_copy, match_graphs(copy, all[j]).distance) << all[i].name << "' vs " << all[j].name;
+    }
+  }
+}
+
+TEST(GraphMatching, DeletingEverythingCostsUnmatchedCost) {
+  // With every pair dissimilar beyond twice the deletion cost, nothing is
+  // matched and the distance is exactly unmatched_cost.
+  MatchingOptions options;
+  options.unmatched_cost = 1e-9;
+  const GraphMatch m = match_graphs(shapes()[0], shapes()[3], options);
+  EXPECT_NEAR(m.distance, options.unmatched_cost, 1e-15);
+  for (const std::int32_t j : m.correspondence) EXPECT_EQ(j, -1);
+}
+
+TEST(GraphMatching, RejectsFailedEntries) {
+  const CollectionEntry failed = failed_collection_entry("broken.off", "", 0, "not a mesh");
+  EXPECT_THROW(match_graphs(failed, shapes()[0]), InvalidArgument);
+  EXPECT_THROW(make_matchable_graph(failed), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace reebkit
