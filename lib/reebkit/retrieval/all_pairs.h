@@ -1,0 +1,56 @@
+// All-pairs distances of a collection (issue 5, `reeb distances`): the
+// N x N matrix of graph-matching distances that retrieval evaluation (PSB
+// measures, precision-recall) reads. Only the pairs i < j are matched, in
+// parallel (OpenMP, dynamic schedule), and mirrored: match_graphs is
+// symmetric by contract.
+#pragma once
+
+#include "reebkit/collection/psb_classes.h"
+#include "reebkit/matching/graph_matching.h"
+#include "reebkit/store/collection_file.h"
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace reebkit {
+
+/// Distance between a failed entry (no graph) and any other entry: the
+/// largest float, so that failed entries rank last and the matrix still
+/// fits the float32 PSB format.
+inline constexpr double kFailedEntryDistance = static_cast<double>(std::numeric_limits<float>::max());
+
+struct AllPairsOptions {
+  int threads = 0;           ///< OpenMP threads; 0 = omp_get_max_threads()
+  MatchingOptions matching;  ///< the cost model of match_graphs
+};
+
+struct PairwiseDistances {
+  std::vector<std::string> names;  ///< of the rows (and columns), in matrix order
+  std::vector<double> values;      ///< names.size() x names.size(), row-major
+  std::int64_t size() const { return static_cast<std::int64_t>(names.size()); }
+  double operator()(std::int64_t i, std::int64_t j) const {
+    return values[static_cast<std::size_t>(i * size() + j)];
+  }
+};
+
+/// match_graphs(entries[i], entries[j]).distance for every pair, in the
+/// order of `entries`: zero diagonal, symmetric, kFailedEntryDistance
+/// between a failed entry and any other. The same matrix whatever the
+/// number of threads. Throws InvalidArgument on threads < 0.
+PairwiseDistances all_pairs_distances(const std::vector<CollectionEntry>& entries, const AllPairsOptions& options = {});
+
+/// The rows of the matrix of a collection: every entry in collection order,
+/// or, given the classes of a .cla file, one row per model of the file in
+/// its order (the entry found as class_of finds it: by name, by name
+/// without extension, by file name without extension). Throws Error naming
+/// the model when a model of the file has no entry, or two models the same.
+std::vector<std::int64_t> matrix_rows(const CollectionReader& collection, const std::vector<PsbClass>& classes = {});
+
+/// The entries `rows` of `collection` (read once) and their all-pairs
+/// distances, rows and columns in the order of `rows`.
+PairwiseDistances all_pairs_distances(const CollectionReader& collection, const std::vector<std::int64_t>& rows,
+                                   const AllPairsOptions& options = {});
+
+}  // namespace reebkit

@@ -1,0 +1,46 @@
+// Query by example (issue 5): the entries of a collection nearest to a query
+// graph. The `candidates` entries whose signatures are nearest to the query's
+// (SignatureIndex) are reranked by attribute-based graph matching
+// (match_graphs) and the best `k` returned. With candidates >= the number of
+// entries the ranking is that of matching the query against every entry.
+#pragma once
+
+#include "reebkit/matching/graph_matching.h"
+#include "reebkit/retrieval/signature_index.h"
+#include "reebkit/store/collection_file.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace reebkit {
+
+struct QueryOptions {
+  int k = 10;             ///< results returned; >= 1
+  int candidates = 100;   ///< nearest signatures reranked by graph matching (at least k); >= 1
+  MatchingOptions matching;  ///< the cost model of match_graphs
+};
+
+struct QueryResult {
+  std::int64_t index = 0;           ///< of the entry in the collection
+  std::string name;
+  std::string class_label;          ///< "" when the collection has none
+  double distance = 0.0;            ///< match_graphs(query, entry).distance
+  double signature_distance = 0.0;  ///< Euclidean distance between the signatures (the pre-filter's)
+};
+
+/// The k entries of `collection` nearest to `query` by graph matching among
+/// the `candidates` nearest by signature, by increasing distance (ties by
+/// increasing index). Failed entries are never returned; an entry named like
+/// the query is (at distance 0 when it is the same graph). `index` is
+/// SignatureIndex(collection.signatures(), kSignatureLength), built once
+/// for many queries. Throws InvalidArgument when the query has no graph, on
+/// k < 1 or candidates < 1, or when `index` does not cover the collection.
+std::vector<QueryResult> query_collection(const CollectionReader& collection, const SignatureIndex& index,
+                                          const CollectionEntry& query, const QueryOptions& options = {});
+
+/// The same, building the signature index for this one query.
+std::vector<QueryResult> query_collection(const CollectionReader& collection, const CollectionEntry& query,
+                                          const QueryOptions& options = {});
+
+}  // namespace reebkit

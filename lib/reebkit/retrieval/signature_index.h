@@ -1,0 +1,55 @@
+// Nearest neighbours among graph signatures (issue 5): the pre-filter of
+// query by example. Each entry of a collection has a fixed-length signature
+// (attributes/graph_attributes.h, kSignatureLength entries in [0,1]); the
+// candidates for graph matching are the entries whose signatures are nearest
+// to the query's in the Euclidean distance. FLANN (Muja and Lowe 2014) with
+// an exact, deterministic index: a linear scan or a single k-d tree searched
+// without approximation.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace reebkit {
+
+enum class SignatureIndexKind {
+  Linear,        ///< flann::LinearIndexParams: every row compared
+  KdTreeSingle,  ///< flann::KDTreeSingleIndexParams, searched exactly (eps = 0)
+};
+
+struct SignatureIndexOptions {
+  SignatureIndexKind kind = SignatureIndexKind::KdTreeSingle;  ///< both exact; the k-d tree is faster
+  int leaf_max_size = 10;  ///< points per k-d tree leaf (FLANN's default)
+};
+
+struct SignatureNeighbour {
+  std::int64_t row = 0;   ///< row of the signature matrix (the collection index)
+  double distance = 0.0;  ///< Euclidean distance between the signatures
+};
+
+/// An index over the rows of a signature matrix. Rows holding a NaN (failed
+/// entries) are left out. Building copies the rows; the index is read-only
+/// afterwards and may be searched from several threads.
+class SignatureIndex {
+ public:
+  /// `signatures`: rows x `dimension`, row-major. Throws InvalidArgument when
+  /// the size is not a multiple of `dimension` or `dimension` < 1.
+  SignatureIndex(const std::vector<double>& signatures, int dimension, const SignatureIndexOptions& options = {});
+  ~SignatureIndex();
+  SignatureIndex(SignatureIndex&&) noexcept;
+
+  /// Indexed rows (rows without NaN).
+  std::int64_t size() const;
+  int dimension() const;
+  /// The min(count, size()) rows nearest to `query` (dimension() entries),
+  /// by increasing distance, ties by increasing row. Throws InvalidArgument
+  /// on a query of the wrong length or holding a NaN.
+  std::vector<SignatureNeighbour> nearest(const std::vector<double>& query, std::int64_t count) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace reebkit

@@ -1,0 +1,73 @@
+// All-pairs distances: every entry is match_graphs of its pair, zero
+// diagonal, symmetric, failed entries at kFailedEntryDistance, the same
+// matrix with 1 and 2 threads; rows in .cla order.
+#include "io/io_test_util.h"
+#include "reebkit/core/error.h"
+#include "reebkit/retrieval/all_pairs.h"
+#include "retrieval/retrieval_test_util.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+namespace reebkit::test {
+namespace {
+
+TEST(AllPairs, SymmetricZeroDiagonalEqualToMatchingAndSerialEqualsParallel) {
+  const std::vector<CollectionEntry>& entries = generated_entries();
+  AllPairsOptions serial;
+  serial.threads = 1;
+  AllPairsOptions parallel;
+  parallel.threads = 2;
+  const PairwiseDistances a = all_pairs_distances(entries, serial);
+  const PairwiseDistances b = all_pairs_distances(entries, parallel);
+  const std::int64_t n = static_cast<std::int64_t>(entries.size());
+  ASSERT_EQ(a.size(), n);
+  EXPECT_EQ(a.values, b.values);  // bit for bit
+  for (std::int64_t i = 0; i < n; ++i) {
+    const CollectionEntry& ei = entries[static_cast<std::size_t>(i)];
+    EXPECT_EQ(a.names[static_cast<std::size_t>(i)], ei.name);
+    EXPECT_EQ(a(i, i), 0.0);
+    for (std::int64_t j = 0; j < n; ++j) {
+      const CollectionEntry& ej = entries[static_cast<std::size_t>(j)];
+      EXPECT_EQ(a(i, j), a(j, i));
+      if (i == j) continue;
+      if (!ei.ok || !ej.ok) {
+        EXPECT_EQ(a(i, j), kFailedEntryDistance);
+      } else if (i < j) {
+        EXPECT_EQ(a(i, j), match_graphs(ei, ej).distance);
+      }
+    }
+  }
+  EXPECT_THROW(all_pairs_distances(entries, AllPairsOptions{-1, {}}), InvalidArgument);
+}
+
+void write_text(const std::filesystem::path& path, const std::string& text) { std::ofstream(path) << text; }
+
+TEST(AllPairs, RowsInClaOrder) {
+  const TempDir dir;
+  write_generated_collection(dir / "c.h5");
+  const CollectionReader collection(dir / "c.h5");
+  EXPECT_EQ(matrix_rows(collection), (std::vector<std::int64_t>{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}));
+
+  write_text(dir / "c.cla", "PSB 1\n2 3\n\ntorus 0 2\ntorus-b\ntorus-a\n\nstar 0 1\narms3-a\n");
+  const std::vector<std::int64_t> rows = matrix_rows(collection, read_psb_classes(dir / "c.cla"));
+  EXPECT_EQ(rows, (std::vector<std::int64_t>{12, 11, 2}));
+  const PairwiseDistances d = all_pairs_distances(collection, rows);
+  EXPECT_EQ(d.names, (std::vector<std::string>{"torus-b", "torus-a", "arms3-a"}));
+  const PairwiseDistances all = all_pairs_distances(generated_entries());
+  for (std::int64_t i = 0; i < 3; ++i)
+    for (std::int64_t j = 0; j < 3; ++j)
+      EXPECT_EQ(d(i, j), all(rows[static_cast<std::size_t>(i)], rows[static_cast<std::size_t>(j)]));
+
+  write_text(dir / "missing.cla", "PSB 1\n1 2\nstar 0 2\narms3-a\narms9-a\n");
+  try {
+    matrix_rows(collection, read_psb_classes(dir / "missing.cla"));
+    ADD_FAILURE() << "expected an Error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("'arms9-a'"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace reebkit::test

@@ -1,0 +1,97 @@
+// Query by example: with candidates >= the collection size the ranking is
+// brute force (match_graphs against every entry); with fewer it reranks
+// exactly the nearest signatures; failed entries never come back.
+#include "io/io_test_util.h"
+#include "reebkit/core/error.h"
+#include "reebkit/retrieval/query.h"
+#include "retrieval/retrieval_test_util.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace reebkit::test {
+namespace {
+
+/// Every ok entry matched to the query, by (distance, index), the first k.
+std::vector<QueryResult> brute_force(const CollectionReader& collection, const CollectionEntry& query, int k) {
+  std::vector<QueryResult> all;
+  for (std::int64_t i = 0; i < collection.size(); ++i) {
+    const CollectionEntry e = collection.entry(i);
+    if (e.ok) all.push_back({i, e.name, e.class_label, match_graphs(query, e).distance, 0.0});
+  }
+  std::stable_sort(all.begin(), all.end(),
+                   [](const QueryResult& a, const QueryResult& b) { return a.distance < b.distance; });
+  all.resize(std::min(all.size(), static_cast<std::size_t>(k)));
+  return all;
+}
+
+TEST(QueryCollection, WithEveryCandidateTheRankingIsBruteForce) {
+  const TempDir dir;
+  write_generated_collection(dir / "c.h5");
+  const CollectionReader collection(dir / "c.h5");
+  const SignatureIndex index(collection.signatures(), kSignatureLength);
+  ASSERT_EQ(index.size(), collection.size() - 1);  // the failed entry is not indexed
+  for (const CollectionEntry& query : generated_entries()) {
+    if (!query.ok) continue;
+    for (const int k : {1, 5, 100}) {
+      QueryOptions options;
+      options.k = k;
+      options.candidates = static_cast<int>(collection.size());
+      const std::vector<QueryResult> got = query_collection(collection, index, query, options);
+      const std::vector<QueryResult> want = brute_force(collection, query, k);
+      ASSERT_EQ(got.size(), want.size()) << query.name;
+      for (std::size_t r = 0; r < got.size(); ++r) {
+        EXPECT_EQ(got[r].index, want[r].index) << query.name << " rank " << r;
+        EXPECT_EQ(got[r].name, want[r].name);
+        EXPECT_EQ(got[r].class_label, want[r].class_label);
+        EXPECT_EQ(got[r].distance, want[r].distance);
+      }
+    }
+  }
+}
+
+TEST(QueryCollection, FewCandidatesRerankTheNearestSignatures) {
+  const TempDir dir;
+  write_generated_collection(dir / "c.h5");
+  const CollectionReader collection(dir / "c.h5");
+  const SignatureIndex index(collection.signatures(), kSignatureLength);
+  const CollectionEntry& query = generated_entries()[3];
+  QueryOptions options;
+  options.k = 3;
+  options.candidates = 4;
+  const std::vector<QueryResult> got = query_collection(collection, index, query, options);
+  ASSERT_EQ(got.size(), 3u);
+  std::vector<std::int64_t> nearest;
+  for (const SignatureNeighbour& n : index.nearest(query.signature, 4)) nearest.push_back(n.row);
+  for (std::size_t r = 0; r < got.size(); ++r) {
+    EXPECT_NE(std::find(nearest.begin(), nearest.end(), got[r].index), nearest.end()) << r;
+    EXPECT_EQ(got[r].distance, match_graphs(query, collection.entry(got[r].index)).distance);
+    if (r > 0) {
+      EXPECT_LE(got[r - 1].distance, got[r].distance);
+    }
+  }
+  // The one-shot form builds the same index.
+  const std::vector<QueryResult> once = query_collection(collection, query, options);
+  ASSERT_EQ(once.size(), got.size());
+  for (std::size_t r = 0; r < got.size(); ++r) EXPECT_EQ(once[r].index, got[r].index);
+}
+
+TEST(QueryCollection, RejectsBadOptionsAndFailedQueries) {
+  const TempDir dir;
+  write_generated_collection(dir / "c.h5");
+  const CollectionReader collection(dir / "c.h5");
+  const CollectionEntry& query = generated_entries()[0];
+  QueryOptions options;
+  options.k = 0;
+  EXPECT_THROW(query_collection(collection, query, options), InvalidArgument);
+  options.k = 5;
+  options.candidates = 0;
+  EXPECT_THROW(query_collection(collection, query, options), InvalidArgument);
+  EXPECT_THROW(query_collection(collection, generated_entries()[6], QueryOptions{}), InvalidArgument);
+  const SignatureIndex other({0, 0}, 2);
+  EXPECT_THROW(query_collection(collection, other, query, QueryOptions{}), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace reebkit::test
