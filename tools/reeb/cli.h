@@ -47,5 +47,6 @@ int run_deform(const std::vector<std::string>& args);
 int run_index(const std::vector<std::string>& args);
 int run_info(const std::vector<std::string>& args);
 int run_export(const std::vector<std::string>& args);
+int run_eval(const std::vector<std::string>& args);
 
 }  // namespace reebkit::cli

@@ -16,6 +16,7 @@ const std::vector<Command>& commands() {
       {"index", "index a collection of meshes into one HDF5 file of attributed Reeb graphs", run_index},
       {"info", "what a collection file holds: counts, classes, failures, provenance", run_info},
       {"export", "one graph of a collection file as the JSON of reeb graph", run_export},
+      {"eval", "retrieval measures (NN, FT, ST, E, DCG, precision-recall) of distance matrices, as a report", run_eval},
   };
   return all;
 }

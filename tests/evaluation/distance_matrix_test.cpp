@@ -1,0 +1,107 @@
+// PSB binary and SHREC ASCII distance matrices: the byte layout, exact round
+// trips, and errors that name the file and the problem.
+#include "reebkit/evaluation/distance_matrix.h"
+
+#include "io/io_test_util.h"
+#include "reebkit/core/error.h"
+#include "reebkit/io/file_bytes.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <functional>
+#include <limits>
+
+namespace reebkit::test {
+namespace {
+
+DistanceMatrix awkward_matrix() {
+  DistanceMatrix m(3, 3);
+  m << 0.0f, 0.1f, 1e-30f,  //
+      3.4e38f, 0.0f, -2.5f,  //
+      std::numeric_limits<float>::infinity(), 1.0f / 3.0f, 0.0f;
+  return m;
+}
+
+std::string error_message(const std::function<void()>& action) {
+  try {
+    action();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "expected an Error";
+  return "";
+}
+
+TEST(DistanceMatrix, PsbLayoutIsRowMajorFloat32WithoutHeader) {
+  const TempDir dir;
+  const DistanceMatrix m = awkward_matrix();
+  write_psb_matrix(dir / "d.matrix", m);
+  const std::string bytes = read_file_bytes(dir / "d.matrix");
+  ASSERT_EQ(bytes.size(), 9 * sizeof(float));
+  float second = 0, fourth = 0;  // (0, 1) and (1, 0)
+  std::memcpy(&second, bytes.data() + 4, 4);
+  std::memcpy(&fourth, bytes.data() + 12, 4);
+  EXPECT_EQ(second, 0.1f);
+  EXPECT_EQ(fourth, 3.4e38f);
+}
+
+TEST(DistanceMatrix, BothFormatsRoundTripEveryBit) {
+  const TempDir dir;
+  const DistanceMatrix m = awkward_matrix();
+  write_psb_matrix(dir / "d.matrix", m);
+  write_shrec_matrix(dir / "d.txt", m);
+  for (const DistanceMatrix& back : {read_psb_matrix(dir / "d.matrix"), read_shrec_matrix(dir / "d.txt"),
+                                     read_distance_matrix(dir / "d.matrix"), read_distance_matrix(dir / "d.txt")}) {
+    ASSERT_EQ(back.rows(), 3);
+    ASSERT_EQ(back.cols(), 3);
+    EXPECT_EQ(std::memcmp(back.data(), m.data(), 9 * sizeof(float)), 0);
+  }
+}
+
+TEST(DistanceMatrix, ShrecTextIsNLinesOfNNumbers) {
+  const TempDir dir;
+  write_bytes(dir / "d.txt", "0 1.5 2\n\n1.5 0 +3\r\n  2e0\t3 0   \n");
+  const DistanceMatrix m = read_shrec_matrix(dir / "d.txt");
+  ASSERT_EQ(m.rows(), 3);
+  EXPECT_EQ(m(0, 1), 1.5f);
+  EXPECT_EQ(m(1, 2), 3.0f);
+  EXPECT_EQ(m(2, 0), 2.0f);
+  EXPECT_EQ(m(2, 2), 0.0f);
+}
+
+TEST(DistanceMatrix, PsbErrorsNameTheFileAndTheProblem) {
+  const TempDir dir;
+  write_bytes(dir / "seven.matrix", std::string(7, '\0'));
+  write_bytes(dir / "three.matrix", std::string(12, '\0'));
+  write_bytes(dir / "empty.matrix", "");
+  const std::string seven = error_message([&] { read_psb_matrix(dir / "seven.matrix"); });
+  EXPECT_NE(seven.find("seven.matrix: 7 bytes is not a whole number of float32"), std::string::npos) << seven;
+  const std::string three = error_message([&] { read_psb_matrix(dir / "three.matrix"); });
+  EXPECT_NE(three.find("three.matrix: 3 float32 values do not make a square"), std::string::npos) << three;
+  const std::string empty = error_message([&] { read_psb_matrix(dir / "empty.matrix"); });
+  EXPECT_NE(empty.find("empty.matrix: empty distance matrix"), std::string::npos) << empty;
+  const std::string missing = error_message([&] { read_psb_matrix(dir / "none.matrix"); });
+  EXPECT_NE(missing.find("none.matrix"), std::string::npos) << missing;
+  EXPECT_THROW(write_psb_matrix(dir / "x.matrix", DistanceMatrix(2, 3)), InvalidArgument);
+}
+
+TEST(DistanceMatrix, ShrecErrorsNameTheFileLineAndProblem) {
+  const TempDir dir;
+  write_bytes(dir / "ragged.txt", "0 1 2\n1 0\n2 1 0\n");
+  write_bytes(dir / "word.txt", "0 1\nx 0\n");
+  write_bytes(dir / "wide.txt", "0 1 2\n1 0 2\n");
+  write_bytes(dir / "blank.txt", " \n\n");
+  const std::string ragged = error_message([&] { read_shrec_matrix(dir / "ragged.txt"); });
+  EXPECT_NE(ragged.find("ragged.txt:2: row 2 has 2 distances, the first row 3"), std::string::npos) << ragged;
+  const std::string word = error_message([&] { read_shrec_matrix(dir / "word.txt"); });
+  EXPECT_NE(word.find("word.txt:2:"), std::string::npos) << word;
+  EXPECT_NE(word.find("'x'"), std::string::npos) << word;
+  const std::string wide = error_message([&] { read_shrec_matrix(dir / "wide.txt"); });
+  EXPECT_NE(wide.find("wide.txt: 2 rows of 3 distances, not a square matrix"), std::string::npos) << wide;
+  const std::string blank = error_message([&] { read_shrec_matrix(dir / "blank.txt"); });
+  EXPECT_NE(blank.find("blank.txt: empty distance matrix"), std::string::npos) << blank;
+}
+
+}  // namespace
+}  // namespace reebkit::test
