@@ -29,9 +29,9 @@ namespace reebkit {
 /// Defaults: the best leave-one-out nearest-neighbour rate on SHREC07
 /// (results/matching_weights.md).
 struct MatchingOptions {
-  double attribute_weight = 1.0;   ///< weight of a(i, j)
+  double attribute_weight = 4.0;   ///< weight of a(i, j)
   double structure_weight = 1.0;   ///< weight of s(i, j)
-  double edge_weight = 0.5;        ///< weight of e(i, j)
+  double edge_weight = 0.25;       ///< weight of e(i, j)
   double unmatched_cost = 0.5;     ///< cost of deleting or inserting a node, per unit of node weight
   double min_node_weight = 0.01;   ///< added to the relative area so that area-less nodes still count
   /// Rounds of edge-consistency refinement: the assignment is solved again
