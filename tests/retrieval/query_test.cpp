@@ -30,15 +30,24 @@ TEST(QueryCollection, WithEveryCandidateTheRankingIsBruteForce) {
   const TempDir dir;
   write_generated_collection(dir / "c.h5");
   const CollectionReader collection(dir / "c.h5");
-  const SignatureIndex index(collection.signatures(), kSignatureLength);
-  ASSERT_EQ(index.size(), collection.size() - 1);  // the failed entry is not indexed
+  const SearchableCollection searchable = load_searchable(collection);
+  ASSERT_EQ(searchable.index.size(), collection.size() - 1);  // the failed entry is not indexed
+  ASSERT_EQ(searchable.entries.size(), static_cast<std::size_t>(collection.size()));
+  for (std::int64_t i = 0; i < collection.size(); ++i) {  // one range read == entry by entry
+    const CollectionEntry& e = searchable.entries[static_cast<std::size_t>(i)];
+    const CollectionEntry one = collection.entry(i);
+    EXPECT_EQ(e.name, one.name);
+    EXPECT_EQ(e.nodes, one.nodes);
+    EXPECT_EQ(e.node_attributes, one.node_attributes);
+    EXPECT_EQ(e.edges, one.edges);
+  }
   for (const CollectionEntry& query : generated_entries()) {
     if (!query.ok) continue;
     for (const int k : {1, 5, 100}) {
       QueryOptions options;
       options.k = k;
       options.candidates = static_cast<int>(collection.size());
-      const std::vector<QueryResult> got = query_collection(collection, index, query, options);
+      const std::vector<QueryResult> got = query_collection(searchable, query, options);
       const std::vector<QueryResult> want = brute_force(collection, query, k);
       ASSERT_EQ(got.size(), want.size()) << query.name;
       for (std::size_t r = 0; r < got.size(); ++r) {
@@ -55,15 +64,15 @@ TEST(QueryCollection, FewCandidatesRerankTheNearestSignatures) {
   const TempDir dir;
   write_generated_collection(dir / "c.h5");
   const CollectionReader collection(dir / "c.h5");
-  const SignatureIndex index(collection.signatures(), kSignatureLength);
+  const SearchableCollection searchable = load_searchable(collection);
   const CollectionEntry& query = generated_entries()[3];
   QueryOptions options;
   options.k = 3;
   options.candidates = 4;
-  const std::vector<QueryResult> got = query_collection(collection, index, query, options);
+  const std::vector<QueryResult> got = query_collection(searchable, query, options);
   ASSERT_EQ(got.size(), 3u);
   std::vector<std::int64_t> nearest;
-  for (const SignatureNeighbour& n : index.nearest(query.signature, 4)) nearest.push_back(n.row);
+  for (const SignatureNeighbour& n : searchable.index.nearest(query.signature, 4)) nearest.push_back(n.row);
   for (std::size_t r = 0; r < got.size(); ++r) {
     EXPECT_NE(std::find(nearest.begin(), nearest.end(), got[r].index), nearest.end()) << r;
     EXPECT_EQ(got[r].distance, match_graphs(query, collection.entry(got[r].index)).distance);
@@ -71,7 +80,7 @@ TEST(QueryCollection, FewCandidatesRerankTheNearestSignatures) {
       EXPECT_LE(got[r - 1].distance, got[r].distance);
     }
   }
-  // The one-shot form builds the same index.
+  // The one-shot form reads the same collection.
   const std::vector<QueryResult> once = query_collection(collection, query, options);
   ASSERT_EQ(once.size(), got.size());
   for (std::size_t r = 0; r < got.size(); ++r) EXPECT_EQ(once[r].index, got[r].index);
@@ -89,8 +98,8 @@ TEST(QueryCollection, RejectsBadOptionsAndFailedQueries) {
   options.candidates = 0;
   EXPECT_THROW(query_collection(collection, query, options), InvalidArgument);
   EXPECT_THROW(query_collection(collection, generated_entries()[6], QueryOptions{}), InvalidArgument);
-  const SignatureIndex other({0, 0}, 2);
-  EXPECT_THROW(query_collection(collection, other, query, QueryOptions{}), InvalidArgument);
+  const SearchableCollection other{{}, SignatureIndex({0, 0}, 2)};
+  EXPECT_THROW(query_collection(other, query, QueryOptions{}), InvalidArgument);
 }
 
 }  // namespace

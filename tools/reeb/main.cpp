@@ -17,6 +17,8 @@ const std::vector<Command>& commands() {
       {"info", "what a collection file holds: counts, classes, failures, provenance", run_info},
       {"export", "one graph of a collection file as the JSON of reeb graph", run_export},
       {"eval", "retrieval measures (NN, FT, ST, E, DCG, precision-recall) of distance matrices, as a report", run_eval},
+      {"query", "the meshes of a collection nearest to a mesh: signature pre-filter, graph matching rerank", run_query},
+      {"distances", "graph-matching distances of every pair of a collection, as a PSB .matrix", run_distances},
   };
   return all;
 }

@@ -59,9 +59,10 @@ std::vector<std::int64_t> matrix_rows(const CollectionReader& collection, const 
 
 PairwiseDistances all_pairs_distances(const CollectionReader& collection, const std::vector<std::int64_t>& rows,
                                    const AllPairsOptions& options) {
+  std::vector<CollectionEntry> all = collection.entries(0, collection.size());
   std::vector<CollectionEntry> entries;
   entries.reserve(rows.size());
-  for (const std::int64_t r : rows) entries.push_back(collection.entry(r));
+  for (const std::int64_t r : rows) entries.push_back(all.at(static_cast<std::size_t>(r)));
   return all_pairs_distances(entries, options);
 }
 

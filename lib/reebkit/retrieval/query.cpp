@@ -7,20 +7,24 @@
 
 namespace reebkit {
 
-std::vector<QueryResult> query_collection(const CollectionReader& collection, const SignatureIndex& index,
-                                          const CollectionEntry& query, const QueryOptions& options) {
+SearchableCollection load_searchable(const CollectionReader& collection) {
+  return {collection.entries(0, collection.size()), SignatureIndex(collection.signatures(), kSignatureLength)};
+}
+
+std::vector<QueryResult> query_collection(const SearchableCollection& collection, const CollectionEntry& query,
+                                          const QueryOptions& options) {
   if (!query.ok) throw InvalidArgument("query '" + query.name + "' has no graph: " + query.error);
   if (options.k < 1 || options.candidates < 1)
     throw InvalidArgument("query: need k >= 1 and candidates >= 1 (k = " + std::to_string(options.k) +
                           ", candidates = " + std::to_string(options.candidates) + ")");
-  if (index.dimension() != kSignatureLength ||
-      static_cast<std::size_t>(collection.size()) * kSignatureLength != collection.signatures().size())
+  if (collection.index.dimension() != kSignatureLength)
     throw InvalidArgument("query: the signature index does not match the collection");
 
   std::vector<QueryResult> ranked;
-  for (const SignatureNeighbour& n : index.nearest(query.signature, std::max(options.k, options.candidates))) {
-    if (n.row >= collection.size()) throw InvalidArgument("query: the signature index does not match the collection");
-    const CollectionEntry entry = collection.entry(n.row);
+  for (const SignatureNeighbour& n : collection.index.nearest(query.signature, std::max(options.k, options.candidates))) {
+    if (n.row >= static_cast<std::int64_t>(collection.entries.size()))
+      throw InvalidArgument("query: the signature index does not match the collection");
+    const CollectionEntry& entry = collection.entries[static_cast<std::size_t>(n.row)];
     ranked.push_back({n.row, entry.name, entry.class_label, match_graphs(query, entry, options.matching).distance,
                       n.distance});
   }
@@ -33,7 +37,7 @@ std::vector<QueryResult> query_collection(const CollectionReader& collection, co
 
 std::vector<QueryResult> query_collection(const CollectionReader& collection, const CollectionEntry& query,
                                           const QueryOptions& options) {
-  return query_collection(collection, SignatureIndex(collection.signatures(), kSignatureLength), query, options);
+  return query_collection(load_searchable(collection), query, options);
 }
 
 }  // namespace reebkit

@@ -29,17 +29,26 @@ struct QueryResult {
   double signature_distance = 0.0;  ///< Euclidean distance between the signatures (the pre-filter's)
 };
 
-/// The k entries of `collection` nearest to `query` by graph matching among
-/// the `candidates` nearest by signature, by increasing distance (ties by
-/// increasing index). Failed entries are never returned; an entry named like
-/// the query is (at distance 0 when it is the same graph). `index` is
-/// SignatureIndex(collection.signatures(), kSignatureLength), built once
-/// for many queries. Throws InvalidArgument when the query has no graph, on
-/// k < 1 or candidates < 1, or when `index` does not cover the collection.
-std::vector<QueryResult> query_collection(const CollectionReader& collection, const SignatureIndex& index,
-                                          const CollectionEntry& query, const QueryOptions& options = {});
+/// A collection held in memory for many queries: its entries and the index
+/// of their signatures.
+struct SearchableCollection {
+  std::vector<CollectionEntry> entries;
+  SignatureIndex index;
+};
 
-/// The same, building the signature index for this one query.
+/// Every entry of `collection` (one read) and SignatureIndex(signatures, kSignatureLength).
+SearchableCollection load_searchable(const CollectionReader& collection);
+
+/// The k entries nearest to `query` by graph matching among the `candidates`
+/// nearest by signature, by increasing distance (ties by increasing index).
+/// Failed entries are never returned; an entry named like the query is (at
+/// distance 0 when it is the same graph). Throws InvalidArgument when the
+/// query has no graph, on k < 1 or candidates < 1, or when the index does
+/// not cover the entries.
+std::vector<QueryResult> query_collection(const SearchableCollection& collection, const CollectionEntry& query,
+                                          const QueryOptions& options = {});
+
+/// The same for one query: load_searchable, then query_collection.
 std::vector<QueryResult> query_collection(const CollectionReader& collection, const CollectionEntry& query,
                                           const QueryOptions& options = {});
 

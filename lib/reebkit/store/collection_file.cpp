@@ -478,6 +478,15 @@ CollectionEntry CollectionReader::entry(std::int64_t i) const {
                  [&] { return std::move(read_entries(impl_->tables, impl_->snapshot, i, 1).front()); });
 }
 
+std::vector<CollectionEntry> CollectionReader::entries(std::int64_t first, std::int64_t count) const {
+  if (first < 0 || count < 0 || first + count > size())
+    throw InvalidArgument(impl_->path.string() + ": entries " + std::to_string(first) + " to " +
+                          std::to_string(first + count - 1) + " out of range (the file holds " +
+                          std::to_string(size()) + ")");
+  if (count == 0) return {};
+  return guarded(impl_->path, "reading entries", [&] { return read_entries(impl_->tables, impl_->snapshot, first, count); });
+}
+
 // ---------------------------------------------------------------------------
 // Writer
 

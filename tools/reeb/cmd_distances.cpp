@@ -1,0 +1,59 @@
+// reeb distances collection.h5 -o dist.matrix: graph-matching distances
+// between every pair of meshes of a collection, as the Princeton Shape
+// Benchmark binary matrix and optionally the SHREC ASCII matrix (README,
+// "Query and distances").
+#include "reeb/cli.h"
+#include "reebkit/core/error.h"
+#include "reebkit/core/timer.h"
+#include "reebkit/evaluation/distance_matrix.h"
+#include "reebkit/retrieval/all_pairs.h"
+
+#include <iomanip>
+#include <iostream>
+
+namespace reebkit::cli {
+
+int run_distances(const std::vector<std::string>& args) {
+  po::options_description options("options");
+  std::string path, output, classes_path, ascii;
+  AllPairsOptions all_pairs;
+  options.add_options()
+      ("collection", po::value(&path)->required(), "collection file written by reeb index")
+      ("output,o", po::value(&output)->required(), "PSB binary matrix to write (float32, N x N, row-major)")
+      ("cla", po::value(&classes_path),
+       "rows in the order of the models of this PSB .cla file (default: collection order, every mesh)")
+      ("ascii", po::value(&ascii), "also write the SHREC ASCII matrix (N lines of N numbers)")
+      ("threads", po::value(&all_pairs.threads)->default_value(0), "threads (0: as many as OpenMP offers)");
+  po::positional_options_description positional;
+  positional.add("collection", 1);
+  po::variables_map vm;
+  if (!parse(args, "reeb distances collection.h5 -o dist.matrix [--cla classes.cla] [--ascii shrec.txt] [--threads N]",
+             options, positional, vm))
+    return 0;
+
+  const CollectionReader collection(path);
+  const std::vector<PsbClass> classes = classes_path.empty() ? std::vector<PsbClass>{} : read_psb_classes(classes_path);
+  std::vector<std::int64_t> rows;
+  try {
+    rows = matrix_rows(collection, classes);
+  } catch (const Error& e) {
+    throw Error(path + ": " + e.what() + " (classes from " + classes_path + ")");
+  }
+  Timer timer;
+  const PairwiseDistances distances = all_pairs_distances(collection, rows, all_pairs);
+  const double seconds = timer.lap() / 1000;
+  const std::int64_t n = distances.size();
+  DistanceMatrix matrix(n, n);
+  for (std::int64_t i = 0; i < n; ++i)
+    for (std::int64_t j = 0; j < n; ++j) matrix(i, j) = static_cast<float>(distances(i, j));
+  write_psb_matrix(output, matrix);
+  std::cerr << std::fixed << std::setprecision(2) << n << " x " << n << " distances (" << n * (n - 1) / 2
+            << " pairs) in " << seconds << " s\nwrote " << output << "\n";
+  if (!ascii.empty()) {
+    write_shrec_matrix(ascii, matrix);
+    std::cerr << "wrote " << ascii << "\n";
+  }
+  return 0;
+}
+
+}  // namespace reebkit::cli
