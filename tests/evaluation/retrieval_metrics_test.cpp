@@ -50,6 +50,16 @@ const std::vector<std::vector<Index>> kToy = {
     {0, 1, 2, 3, 4, 5},  // q6 (B): rel 0 0 0 1 1 1, the worst
 };
 
+/// Distance `inside` between models of one class, `across` between classes.
+DistanceMatrix block_matrix(const ModelClasses& classes, float inside, float across) {
+  const auto n = static_cast<Eigen::Index>(classes.of_model.size());
+  DistanceMatrix d(n, n);
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index j = 0; j < n; ++j)
+      d(i, j) = classes.of_model[std::size_t(i)] == classes.of_model[std::size_t(j)] ? inside : across;
+  return d;
+}
+
 const QueryScores& query(const RetrievalEvaluation& e, Index model) {
   for (const QueryScores& q : e.queries)
     if (q.model == model) return q;
@@ -181,10 +191,7 @@ TEST(RetrievalMetrics, PerfectMatrixGivesOneEverywhereButTheBoundedEMeasure) {
   // Classes of 3, 4 and 5 models (N = 12), distance 0 inside a class, 1 across.
   const std::vector<Index> sizes = {3, 4, 5};
   const ModelClasses classes = classes_of_sizes(sizes);
-  DistanceMatrix d(12, 12);
-  for (Index i = 0; i < 12; ++i)
-    for (Index j = 0; j < 12; ++j) d(i, j) = classes.of_model[std::size_t(i)] == classes.of_model[std::size_t(j)] ? 0.f : 1.f;
-  const RetrievalEvaluation e = evaluate_retrieval(d, classes);
+  const RetrievalEvaluation e = evaluate_retrieval(block_matrix(classes, 0.0f, 1.0f), classes);
   for (const QueryScores& q : e.queries) {
     EXPECT_EQ(q.scores.nearest_neighbor, 1.0);
     EXPECT_EQ(q.scores.first_tier, 1.0);
@@ -205,10 +212,7 @@ TEST(RetrievalMetrics, ReversedMatrixGivesTheWorstValues) {
   // N - 1 - K others, at positions N - K .. N - 1 (N = 12).
   const std::vector<Index> sizes = {3, 4, 5};
   const ModelClasses classes = classes_of_sizes(sizes);
-  DistanceMatrix d(12, 12);
-  for (Index i = 0; i < 12; ++i)
-    for (Index j = 0; j < 12; ++j) d(i, j) = classes.of_model[std::size_t(i)] == classes.of_model[std::size_t(j)] ? 1.f : 0.f;
-  const RetrievalEvaluation e = evaluate_retrieval(d, classes);
+  const RetrievalEvaluation e = evaluate_retrieval(block_matrix(classes, 1.0f, 0.0f), classes);
   for (const QueryScores& q : e.queries) {
     const int k = sizes[std::size_t(q.class_id)] - 1;
     const int others = 11 - k;
