@@ -49,5 +49,7 @@ int run_info(const std::vector<std::string>& args);
 int run_export(const std::vector<std::string>& args);
 int run_match(const std::vector<std::string>& args);
 int run_eval(const std::vector<std::string>& args);
+int run_query(const std::vector<std::string>& args);
+int run_distances(const std::vector<std::string>& args);
 
 }  // namespace reebkit::cli

@@ -18,6 +18,8 @@ const std::vector<Command>& commands() {
       {"export", "one graph of a collection file as the JSON of reeb graph", run_export},
       {"match", "graph-matching distance and node correspondence of two meshes or collection entries", run_match},
       {"eval", "retrieval measures (NN, FT, ST, E, DCG, precision-recall) of distance matrices, as a report", run_eval},
+      {"query", "the meshes of a collection nearest to a mesh: signature pre-filter, graph matching rerank", run_query},
+      {"distances", "graph-matching distances of every pair of a collection, as a PSB .matrix", run_distances},
   };
   return all;
 }
