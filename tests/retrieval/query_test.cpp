@@ -80,6 +80,17 @@ TEST(QueryCollection, FewCandidatesRerankTheNearestSignatures) {
       EXPECT_LE(got[r - 1].distance, got[r].distance);
     }
   }
+  // One thread or two: the same ranking.
+  options.threads = 1;
+  const std::vector<QueryResult> serial = query_collection(searchable, query, options);
+  options.threads = 2;
+  const std::vector<QueryResult> parallel = query_collection(searchable, query, options);
+  ASSERT_EQ(serial.size(), got.size());
+  ASSERT_EQ(parallel.size(), got.size());
+  for (std::size_t r = 0; r < got.size(); ++r) {
+    EXPECT_EQ(serial[r].index, parallel[r].index);
+    EXPECT_EQ(serial[r].distance, parallel[r].distance);
+  }
   // The one-shot form reads the same collection.
   const std::vector<QueryResult> once = query_collection(collection, query, options);
   ASSERT_EQ(once.size(), got.size());
@@ -96,6 +107,9 @@ TEST(QueryCollection, RejectsBadOptionsAndFailedQueries) {
   EXPECT_THROW(query_collection(collection, query, options), InvalidArgument);
   options.k = 5;
   options.candidates = 0;
+  EXPECT_THROW(query_collection(collection, query, options), InvalidArgument);
+  options.candidates = 10;
+  options.threads = -1;
   EXPECT_THROW(query_collection(collection, query, options), InvalidArgument);
   EXPECT_THROW(query_collection(collection, generated_entries()[6], QueryOptions{}), InvalidArgument);
   const SearchableCollection other{{}, SignatureIndex({0, 0}, 2)};

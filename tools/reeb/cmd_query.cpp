@@ -65,13 +65,15 @@ int run_query(const std::vector<std::string>& args) {
       ("k,k", po::value(&query_options.k)->default_value(query_options.k), "results to list")
       ("candidates", po::value(&query_options.candidates)->default_value(query_options.candidates),
        "nearest graph signatures reranked by graph matching (>= the collection size: every mesh)")
+      ("threads", po::value(&query_options.threads)->default_value(0),
+       "threads matching the candidates (0: as many as OpenMP offers)")
       ("json", po::bool_switch(&json), "print the ranked list as JSON")
       ("epsilon", po::value(&analysis.features.epsilon)->default_value(analysis.features.epsilon),
        "for a mesh file: relaxation radius of the extrema intersection (use the collection's)");
   po::positional_options_description positional;
   positional.add("collection", 1).add("query", 1);
   po::variables_map vm;
-  if (!parse(args, "reeb query collection.h5 MESH_OR_NAME [-k 10] [--candidates 100] [--json]", options, positional,
+  if (!parse(args, "reeb query collection.h5 MESH_OR_NAME [-k 10] [--candidates 100] [--threads N] [--json]", options, positional,
              vm))
     return 0;
 

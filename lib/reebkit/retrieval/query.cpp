@@ -2,6 +2,8 @@
 
 #include "reebkit/core/error.h"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <string>
 
@@ -14,19 +16,27 @@ SearchableCollection load_searchable(const CollectionReader& collection) {
 std::vector<QueryResult> query_collection(const SearchableCollection& collection, const CollectionEntry& query,
                                           const QueryOptions& options) {
   if (!query.ok) throw InvalidArgument("query '" + query.name + "' has no graph: " + query.error);
-  if (options.k < 1 || options.candidates < 1)
-    throw InvalidArgument("query: need k >= 1 and candidates >= 1 (k = " + std::to_string(options.k) +
-                          ", candidates = " + std::to_string(options.candidates) + ")");
+  if (options.k < 1 || options.candidates < 1 || options.threads < 0)
+    throw InvalidArgument("query: need k >= 1, candidates >= 1 and threads >= 0 (k = " + std::to_string(options.k) +
+                          ", candidates = " + std::to_string(options.candidates) +
+                          ", threads = " + std::to_string(options.threads) + ")");
   if (collection.index.dimension() != kSignatureLength)
     throw InvalidArgument("query: the signature index does not match the collection");
 
-  std::vector<QueryResult> ranked;
-  for (const SignatureNeighbour& n : collection.index.nearest(query.signature, std::max(options.k, options.candidates))) {
+  const std::vector<SignatureNeighbour> nearest =
+      collection.index.nearest(query.signature, std::max(options.k, options.candidates));
+  for (const SignatureNeighbour& n : nearest)
     if (n.row >= static_cast<std::int64_t>(collection.entries.size()))
       throw InvalidArgument("query: the signature index does not match the collection");
+  std::vector<QueryResult> ranked(nearest.size());
+  const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
+  const auto count = static_cast<std::int64_t>(nearest.size());
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+  for (std::int64_t c = 0; c < count; ++c) {
+    const SignatureNeighbour& n = nearest[static_cast<std::size_t>(c)];
     const CollectionEntry& entry = collection.entries[static_cast<std::size_t>(n.row)];
-    ranked.push_back({n.row, entry.name, entry.class_label, match_graphs(query, entry, options.matching).distance,
-                      n.distance});
+    ranked[static_cast<std::size_t>(c)] = {n.row, entry.name, entry.class_label,
+                                           match_graphs(query, entry, options.matching).distance, n.distance};
   }
   std::sort(ranked.begin(), ranked.end(), [](const QueryResult& a, const QueryResult& b) {
     return a.distance != b.distance ? a.distance < b.distance : a.index < b.index;

@@ -18,6 +18,7 @@ namespace reebkit {
 struct QueryOptions {
   int k = 10;             ///< results returned; >= 1
   int candidates = 100;   ///< nearest signatures reranked by graph matching (at least k); >= 1
+  int threads = 0;        ///< OpenMP threads matching the candidates; 0 = omp_get_max_threads()
   MatchingOptions matching;  ///< the cost model of match_graphs
 };
 
@@ -43,8 +44,8 @@ SearchableCollection load_searchable(const CollectionReader& collection);
 /// nearest by signature, by increasing distance (ties by increasing index).
 /// Failed entries are never returned; an entry named like the query is (at
 /// distance 0 when it is the same graph). Throws InvalidArgument when the
-/// query has no graph, on k < 1 or candidates < 1, or when the index does
-/// not cover the entries.
+/// query has no graph, on k < 1, candidates < 1 or threads < 0, or when the
+/// index does not cover the entries. The same ranking whatever the number of threads.
 std::vector<QueryResult> query_collection(const SearchableCollection& collection, const CollectionEntry& query,
                                           const QueryOptions& options = {});
 
