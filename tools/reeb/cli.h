@@ -51,5 +51,6 @@ int run_match(const std::vector<std::string>& args);
 int run_eval(const std::vector<std::string>& args);
 int run_query(const std::vector<std::string>& args);
 int run_distances(const std::vector<std::string>& args);
+int run_variants(const std::vector<std::string>& args);
 
 }  // namespace reebkit::cli

@@ -1,0 +1,165 @@
+// reeb variants INPUT... -o DIR: a collection with classes made from a few
+// meshes (the embedded default collection of the demo). For every mesh it
+// writes the mesh and five variants that keep what it is, each in the class
+// named after it:
+//   NAME.off           the mesh (cleaned, largest component)
+//   NAME_rotated.off   randomly rotated, rescaled (x 0.5 .. 2) and translated
+//   NAME_resampled.off the same surface sampled differently (resample_mesh)
+//   NAME_posed1.off    one leaf component of the Reeb graph turned by 20..35
+//                      degrees either way (deform_component, Tierny et al.
+//                      2006, section 5.2)
+//   NAME_posed2.off    two leaf components turned (one, the other way, when
+//                      the graph has a single leaf)
+//   NAME_noisy.off     vertices moved along their normals by up to 0.2 % of
+//                      the bounding box diagonal (add_normal_noise)
+// and DIR/variants.cla, the classes in the Princeton Shape Benchmark format
+// (read_psb_classes) with the model ids reeb index gives the files. The same
+// inputs and --seed give the same files.
+#include "reeb/cli.h"
+#include "reebkit/collection/mesh_inputs.h"
+#include "reebkit/core/error.h"
+#include "reebkit/io/off.h"
+#include "reebkit/mesh/resampling.h"
+#include "reebkit/mesh/transform.h"
+#include "reebkit/pipeline/analyze_mesh.h"
+#include "reebkit/reeb/deformation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <random>
+
+namespace reebkit::cli {
+
+namespace {
+
+/// Leaves of the Reeb graph (nodes with a parent and no child), largest area first.
+std::vector<Index> leaves_by_area(const ReebGraph& g) {
+  std::vector<char> has_parent(g.nodes.size(), 0), has_child(g.nodes.size(), 0);
+  for (const auto& [from, to] : g.edges) {
+    has_child[static_cast<std::size_t>(from)] = 1;
+    has_parent[static_cast<std::size_t>(to)] = 1;
+  }
+  std::vector<Index> leaves;
+  for (Index n = 0; n < g.num_nodes(); ++n)
+    if (has_parent[static_cast<std::size_t>(n)] && !has_child[static_cast<std::size_t>(n)]) leaves.push_back(n);
+  std::stable_sort(leaves.begin(), leaves.end(), [&](Index a, Index b) {
+    return g.nodes[static_cast<std::size_t>(a)].area > g.nodes[static_cast<std::size_t>(b)].area;
+  });
+  return leaves;
+}
+
+/// Plans turning `count` of the (up to four) largest leaves, picked at random,
+/// each by a random angle of 20..35 degrees either way; a single leaf asked
+/// for twice turns once by -angle. Leaves without a default axis are passed over.
+std::vector<Deformation> plan_pose(const MeshAnalysis& analysis, int count, std::mt19937_64& rng) {
+  std::vector<Index> leaves = leaves_by_area(analysis.reeb);
+  leaves.resize(std::min<std::size_t>(leaves.size(), 4));
+  std::shuffle(leaves.begin(), leaves.end(), rng);
+  std::uniform_real_distribution<double> magnitude(20.0, 35.0);
+  std::bernoulli_distribution negative(0.5);
+  std::vector<Deformation> plans;
+  for (const Index leaf : leaves) {
+    if (static_cast<int>(plans.size()) == count) break;
+    DeformOptions options;
+    options.node = leaf;
+    options.angle_degrees = (negative(rng) ? -1.0 : 1.0) * magnitude(rng);
+    try {
+      plans.push_back(plan_deformation(analysis, options));
+    } catch (const InvalidArgument& e) {
+      std::cerr << "warning: " << analysis.mesh.source << ": leaf " << leaf << " not turned: " << e.what() << "\n";
+    }
+  }
+  if (count == 2 && plans.size() == 1) {
+    Deformation back = plans.front();
+    back.angle_degrees = -back.angle_degrees;
+    return {back};
+  }
+  return plans;
+}
+
+Mesh posed(const MeshAnalysis& analysis, const std::vector<Deformation>& plans) {
+  Mesh out = analysis.mesh;
+  for (const Deformation& plan : plans) out = apply_deformation(out, plan);  // leaves: no plan moves another's pivot
+  return out;
+}
+
+Similarity random_similarity(const Mesh& mesh, std::mt19937_64& rng) {
+  const double diagonal = (mesh.vertices.colwise().maxCoeff() - mesh.vertices.colwise().minCoeff()).norm();
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  Similarity s;
+  s.rotation = random_rotation(rng());
+  s.scale = std::exp2(unit(rng));
+  s.translation = Vec3(unit(rng), unit(rng), unit(rng)) * diagonal;
+  return s;
+}
+
+}  // namespace
+
+int run_variants(const std::vector<std::string>& args) {
+  po::options_description options("options");
+  std::vector<std::string> inputs;
+  std::string out_dir;
+  std::uint64_t seed = 2006;
+  options.add_options()
+      ("input", po::value(&inputs)->multitoken()->required(), "mesh files, folders or list files (as reeb index)")
+      ("output,o", po::value(&out_dir)->required(), "folder for the meshes and variants.cla (created)")
+      ("seed", po::value(&seed)->default_value(seed), "random seed of every variant");
+  po::positional_options_description positional;
+  positional.add("input", -1);
+  po::variables_map vm;
+  if (!parse(args, "reeb variants INPUT... -o DIR [--seed S]", options, positional, vm)) return 0;
+
+  const std::vector<MeshInput> meshes = list_mesh_inputs(inputs);
+  const std::filesystem::path dir(out_dir);
+  std::filesystem::create_directories(dir);
+  std::vector<std::pair<std::string, std::vector<std::string>>> classes;
+  for (std::size_t i = 0; i < meshes.size(); ++i) {
+    const std::string name = std::filesystem::path(meshes[i].name).replace_extension().generic_string();
+    std::mt19937_64 rng(seed + 0x9E3779B97F4A7C15ull * (i + 1));
+    CleanedMesh cleaned = load_for_command(meshes[i].path.string(), false).cleaned;
+    const MeshAnalysis analysis = analyze_mesh(std::move(cleaned.components.front()));
+    const Mesh& mesh = analysis.mesh;
+
+    std::vector<std::pair<std::string, Mesh>> variants;
+    variants.emplace_back("", mesh);
+    variants.emplace_back("_rotated", transformed(mesh, random_similarity(mesh, rng)));
+    variants.emplace_back("_resampled", resample_mesh(mesh, ResamplingOptions{0.2, rng()}));
+    for (int turned = 1; turned <= 2; ++turned) {
+      const std::vector<Deformation> plans = plan_pose(analysis, turned, rng);
+      if (plans.empty()) {
+        std::cerr << "warning: " << meshes[i].name << ": no leaf to turn, no _posed" << turned << " copy\n";
+        continue;
+      }
+      variants.emplace_back("_posed" + std::to_string(turned), posed(analysis, plans));
+    }
+    variants.emplace_back("_noisy", add_normal_noise(mesh, NoiseOptions{0.002, rng()}));
+
+    auto& [class_name, models] = classes.emplace_back(name, std::vector<std::string>{});
+    for (const auto& [suffix, variant] : variants) {
+      const std::filesystem::path path = dir / (name + suffix + ".off");
+      std::filesystem::create_directories(path.parent_path());
+      write_off(path, variant);
+      models.push_back(name + suffix);
+    }
+    std::cout << class_name << ": " << models.size() << " meshes\n";
+  }
+
+  std::size_t total = 0;
+  for (const auto& c : classes) total += c.second.size();
+  const std::filesystem::path cla_path = dir / "variants.cla";
+  std::ofstream cla(cla_path);
+  cla << "PSB 1\n" << classes.size() << " " << total << "\n";
+  for (const auto& [class_name, models] : classes) {
+    cla << "\n" << class_name << " 0 " << models.size() << "\n";
+    for (const std::string& m : models) cla << m << "\n";
+  }
+  cla.close();
+  if (!cla) throw Error(cla_path.string() + ": cannot write the class file");
+  std::cout << "wrote " << total << " meshes in " << classes.size() << " classes to " << dir.string() << ", classes in "
+            << cla_path.string() << "\n";
+  return 0;
+}
+
+}  // namespace reebkit::cli
