@@ -1,0 +1,206 @@
+// Two baseline shape descriptors for retrieval, to stand next to reebkit's
+// graph matching in the same evaluation (reeb eval):
+//  - D2, the shape distribution of Osada, Funkhouser, Chazelle and Dobkin
+//    ("Shape distributions", ACM TOG 2002): the histogram of Euclidean
+//    distances between random pairs of surface points (area-weighted
+//    sampling), distances divided by their mean (scale invariance);
+//  - a geodesic distance histogram, invariant to isometric bending: the
+//    area-weighted histogram of the geodesic distances (Dijkstra on the mesh
+//    graph) from farthest-point-sampled sources to every vertex, divided by
+//    the largest of them (the geodesic diameter, approximately).
+// Descriptors are compared with the L1 distance. Writes one PSB binary
+// .matrix per method, rows in .cla order, and prints each method's nearest
+// neighbour rate (query left out, ties to the lower index, classes of fewer
+// than 3 models not queried, as reeb eval).
+//
+//   D=build/data/shrec07_watertight
+//   build/experiments/baselines $D $D/shrec07_watertight.cla /tmp/out/shrec07
+//   -> /tmp/out/shrec07-d2.matrix, /tmp/out/shrec07-geodesic.matrix
+#include "reebkit/collection/mesh_inputs.h"
+#include "reebkit/collection/psb_classes.h"
+#include "reebkit/core/error.h"
+#include "reebkit/evaluation/distance_matrix.h"
+#include "reebkit/geodesic/dijkstra.h"
+#include "reebkit/mesh/load_mesh.h"
+#include "reebkit/mesh/mesh_graph.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace {
+
+using reebkit::Index;
+using reebkit::Mesh;
+using reebkit::Vec3;
+using Histogram = std::vector<double>;
+
+constexpr int kBins = 64;
+constexpr int kD2Samples = 1024;     // 1024 points: 523,776 pairs
+constexpr double kD2Range = 4.0;     // D2 bins cover [0, 4 x mean distance); beyond goes to the last bin
+constexpr int kGeodesicSources = 64;
+
+double triangle_area(const Mesh& m, Index f) {
+  const Vec3 p0 = m.vertices.row(m.triangles(f, 0)), p1 = m.vertices.row(m.triangles(f, 1)),
+             p2 = m.vertices.row(m.triangles(f, 2));
+  return 0.5 * (p1 - p0).cross(p2 - p0).norm();
+}
+
+void add(Histogram& h, double x, double weight) {
+  const int bin = std::clamp(static_cast<int>(x * kBins), 0, kBins - 1);
+  h[static_cast<std::size_t>(bin)] += weight;
+}
+
+Histogram normalized(Histogram h) {
+  double sum = 0;
+  for (const double x : h) sum += x;
+  if (sum > 0)
+    for (double& x : h) x /= sum;
+  return h;
+}
+
+/// D2 with a fixed seed: every mesh gets the same random sequence.
+Histogram d2(const Mesh& m) {
+  std::vector<double> cumulative(static_cast<std::size_t>(m.num_triangles()));
+  double total = 0;
+  for (Index f = 0; f < m.num_triangles(); ++f) cumulative[static_cast<std::size_t>(f)] = total += triangle_area(m, f);
+  std::mt19937_64 rng(2002);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Vec3> points;
+  for (int s = 0; s < kD2Samples; ++s) {
+    const auto it = std::upper_bound(cumulative.begin(), cumulative.end(), unit(rng) * total);
+    const Index f = static_cast<Index>(std::min<std::ptrdiff_t>(it - cumulative.begin(), m.num_triangles() - 1));
+    const double r1 = std::sqrt(unit(rng)), r2 = unit(rng);  // uniform on the triangle (Osada et al., eq. 1)
+    points.push_back((1 - r1) * m.vertices.row(m.triangles(f, 0)).transpose() +
+                     r1 * (1 - r2) * m.vertices.row(m.triangles(f, 1)).transpose() +
+                     r1 * r2 * m.vertices.row(m.triangles(f, 2)).transpose());
+  }
+  std::vector<double> distances;
+  distances.reserve(points.size() * (points.size() - 1) / 2);
+  double sum = 0;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for (std::size_t j = i + 1; j < points.size(); ++j) sum += distances.emplace_back((points[i] - points[j]).norm());
+  const double mean = sum / static_cast<double>(distances.size());
+  Histogram h(kBins, 0.0);
+  for (const double d : distances) add(h, d / (mean * kD2Range), 1.0);
+  return normalized(h);
+}
+
+/// Geodesic distance histogram from farthest-point-sampled sources: the first
+/// source is the vertex farthest from vertex 0, each next one the vertex
+/// farthest from those chosen.
+Histogram geodesic(const Mesh& m) {
+  const reebkit::MeshGraph graph = reebkit::build_mesh_graph(m);
+  std::vector<double> vertex_area(static_cast<std::size_t>(m.num_vertices()), 0.0);
+  for (Index f = 0; f < m.num_triangles(); ++f)
+    for (int k = 0; k < 3; ++k) vertex_area[static_cast<std::size_t>(m.triangles(f, k))] += triangle_area(m, f) / 3;
+  reebkit::DijkstraSolver solver(graph);
+  Index source = solver.run({0}).farthest;
+  std::vector<double> nearest(vertex_area.size(), INFINITY);
+  std::vector<std::vector<double>> fields;
+  double diameter = 0;
+  for (int s = 0; s < kGeodesicSources && source != reebkit::kInvalidIndex; ++s) {
+    const reebkit::DistanceField& field = solver.run({source});
+    diameter = std::max(diameter, field.max_distance);
+    fields.push_back(field.distance);
+    for (std::size_t v = 0; v < nearest.size(); ++v) nearest[v] = std::min(nearest[v], field.distance[v]);
+    const auto far = std::max_element(nearest.begin(), nearest.end());
+    source = *far > 0 ? static_cast<Index>(far - nearest.begin()) : reebkit::kInvalidIndex;
+  }
+  Histogram h(kBins, 0.0);
+  for (const auto& field : fields)
+    for (std::size_t v = 0; v < field.size(); ++v) add(h, field[v] / diameter, vertex_area[v]);
+  return normalized(h);
+}
+
+reebkit::DistanceMatrix l1_distances(const std::vector<Histogram>& h) {
+  const Index n = static_cast<Index>(h.size());
+  reebkit::DistanceMatrix d(n, n);
+  for (Index i = 0; i < n; ++i)
+    for (Index j = 0; j < n; ++j) {
+      double sum = 0;
+      for (int b = 0; b < kBins; ++b) sum += std::abs(h[static_cast<std::size_t>(i)][static_cast<std::size_t>(b)] -
+                                                       h[static_cast<std::size_t>(j)][static_cast<std::size_t>(b)]);
+      d(i, j) = static_cast<float>(sum);
+    }
+  return d;
+}
+
+/// Fraction of the queries (models of classes with >= 3 models) whose nearest
+/// other model, ties to the lower index, is in their class.
+double nearest_neighbor_rate(const reebkit::DistanceMatrix& d, const std::vector<int>& label,
+                             const std::vector<int>& class_size) {
+  int queries = 0, hits = 0;
+  for (Index i = 0; i < d.rows(); ++i) {
+    if (class_size[static_cast<std::size_t>(label[static_cast<std::size_t>(i)])] < 3) continue;
+    Index best = i == 0 ? 1 : 0;
+    for (Index j = 0; j < d.cols(); ++j)
+      if (j != i && d(i, j) < d(i, best)) best = j;
+    ++queries;
+    hits += label[static_cast<std::size_t>(best)] == label[static_cast<std::size_t>(i)];
+  }
+  return queries ? static_cast<double>(hits) / queries : 0.0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 4) {
+    std::cerr << "usage: baselines MESH_DIR CLASSES.cla OUT_PREFIX   (writes OUT_PREFIX-d2.matrix, "
+                 "OUT_PREFIX-geodesic.matrix; threads: OMP_NUM_THREADS)\n";
+    return 2;
+  }
+  try {
+    const std::vector<reebkit::PsbClass> classes = reebkit::read_psb_classes(argv[2]);
+    std::map<std::string, std::filesystem::path> file_of;  // model id (name without extension) -> file
+    for (const reebkit::MeshInput& input : reebkit::list_mesh_inputs({argv[1]}))
+      file_of[std::filesystem::path(input.name).replace_extension().generic_string()] = input.path;
+    std::vector<std::filesystem::path> files;
+    std::vector<int> label, class_size;
+    for (const reebkit::PsbClass& c : classes) {
+      class_size.push_back(static_cast<int>(c.models.size()));
+      for (const std::string& model : c.models) {
+        const auto it = file_of.find(model);
+        if (it == file_of.end())
+          throw reebkit::Error(std::string(argv[2]) + ": model " + model + " has no mesh file in " + argv[1]);
+        files.push_back(it->second);
+        label.push_back(static_cast<int>(class_size.size()) - 1);
+      }
+    }
+    const Index n = static_cast<Index>(files.size());
+    std::vector<Histogram> d2_histograms(files.size()), geodesic_histograms(files.size());
+    std::vector<double> d2_ms(files.size()), geodesic_ms(files.size());
+#pragma omp parallel for schedule(dynamic)
+    for (Index i = 0; i < n; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      const Mesh mesh = std::move(reebkit::load_mesh(files[k]).components.front());
+      double t = omp_get_wtime();
+      d2_histograms[k] = d2(mesh);
+      d2_ms[k] = 1e3 * (omp_get_wtime() - t);
+      t = omp_get_wtime();
+      geodesic_histograms[k] = geodesic(mesh);
+      geodesic_ms[k] = 1e3 * (omp_get_wtime() - t);
+    }
+    const std::string prefix = argv[3];
+    for (const auto& [method, histograms, ms] :
+         {std::tuple{"d2", &d2_histograms, &d2_ms}, std::tuple{"geodesic", &geodesic_histograms, &geodesic_ms}}) {
+      const reebkit::DistanceMatrix d = l1_distances(*histograms);
+      reebkit::write_psb_matrix(prefix + "-" + method + ".matrix", d);
+      double total_ms = 0;
+      for (const double x : *ms) total_ms += x;
+      std::cout << method << ": nearest neighbour " << nearest_neighbor_rate(d, label, class_size) << " over " << n
+                << " models, descriptor " << total_ms / n << " ms per mesh, wrote " << prefix << "-" << method
+                << ".matrix\n";
+    }
+  } catch (const std::exception& e) {
+    std::cerr << "baselines: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
