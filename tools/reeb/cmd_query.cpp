@@ -65,7 +65,7 @@ int run_query(const std::vector<std::string>& args) {
       ("k,k", po::value(&query_options.k)->default_value(query_options.k), "results to list")
       ("candidates", po::value(&query_options.candidates)->default_value(query_options.candidates),
        "nearest graph signatures reranked by graph matching (>= the collection size: every mesh)")
-      ("threads", po::value(&query_options.threads)->default_value(0),
+      ("threads", po::value(&query_options.threads)->default_value(query_options.threads),
        "threads matching the candidates (0: as many as OpenMP offers)")
       ("json", po::bool_switch(&json), "print the ranked list as JSON")
       ("epsilon", po::value(&analysis.features.epsilon)->default_value(analysis.features.epsilon),

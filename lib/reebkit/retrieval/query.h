@@ -18,7 +18,11 @@ namespace reebkit {
 struct QueryOptions {
   int k = 10;             ///< results returned; >= 1
   int candidates = 100;   ///< nearest signatures reranked by graph matching (at least k); >= 1
-  int threads = 0;        ///< OpenMP threads matching the candidates; 0 = omp_get_max_threads()
+  /// OpenMP threads matching the candidates; 0 = omp_get_max_threads(). One by
+  /// default: a typical query matches its 100 candidates in under 1 ms, less
+  /// than waking a second thread costs on a busy machine (bench/retrieval_bench);
+  /// more threads pay for large query graphs (100+ nodes).
+  int threads = 1;
   MatchingOptions matching;  ///< the cost model of match_graphs
 };
 
