@@ -6,26 +6,12 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 
 namespace reebkit::test {
 namespace {
-
-/// Exit status and standard output of a shell command.
-std::pair<int, std::string> run(const std::string& command) {
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return {-1, "popen failed"};
-  std::string output;
-  char buffer[4096];
-  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) output += buffer;
-  const int status = ::pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-}
-
-std::string quoted(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
 
 /// The lines of a graph JSON file without the ones that differ between
 /// `reeb graph` and `reeb export` by design: the mesh path and the timings.
@@ -49,13 +35,14 @@ TEST(ReebIndexCli, IndexInfoExportOnTheEmbeddedCollection) {
   ASSERT_GT(meshes, 0u);
 
   const auto [indexed, index_out] =
-      run(reeb + " index " + quoted(datasets) + " -o " + quoted(dir / "c.h5") + " --threads 2 2>&1");
+      run_command(reeb + " index " + shell_quoted(datasets) + " -o " + shell_quoted(dir / "c.h5") +
+                  " --threads 2 2>&1");
   ASSERT_EQ(indexed, 0) << index_out;
   EXPECT_NE(index_out.find(std::to_string(meshes) + " meshes: " + std::to_string(meshes) + " ok, 0 failed"),
             std::string::npos)
       << index_out;
 
-  const auto [info_status, info] = run(reeb + " info " + quoted(dir / "c.h5"));
+  const auto [info_status, info] = run_command(reeb + " info " + shell_quoted(dir / "c.h5"));
   ASSERT_EQ(info_status, 0) << info;
   EXPECT_NE(info.find(std::to_string(meshes) + " meshes: " + std::to_string(meshes) + " ok, 0 failed"),
             std::string::npos)
@@ -65,22 +52,24 @@ TEST(ReebIndexCli, IndexInfoExportOnTheEmbeddedCollection) {
 
   // The same document from the collection and from the mesh (timings and path aside).
   const auto [exported, export_out] =
-      run(reeb + " export " + quoted(dir / "c.h5") + " elk.off --json -o " + quoted(dir / "export.json") + " 2>&1");
+      run_command(reeb + " export " + shell_quoted(dir / "c.h5") + " elk.off --json -o " +
+                  shell_quoted(dir / "export.json") + " 2>&1");
   ASSERT_EQ(exported, 0) << export_out;
   const auto [graphed, graph_out] =
-      run(reeb + " graph " + quoted(datasets / "elk.off") + " -o " + quoted(dir / "graph.json"));
+      run_command(reeb + " graph " + shell_quoted(datasets / "elk.off") + " -o " + shell_quoted(dir / "graph.json"));
   ASSERT_EQ(graphed, 0) << graph_out;
   const std::vector<std::string> a = comparable_lines(dir / "export.json");
   EXPECT_GT(a.size(), 100u);
   EXPECT_EQ(a, comparable_lines(dir / "graph.json"));
 
-  const auto [missing, missing_out] = run(reeb + " export " + quoted(dir / "c.h5") + " nothing.off --json 2>&1");
+  const auto [missing, missing_out] =
+      run_command(reeb + " export " + shell_quoted(dir / "c.h5") + " nothing.off --json 2>&1");
   EXPECT_EQ(missing, 1);
   EXPECT_NE(missing_out.find("no mesh named 'nothing.off'"), std::string::npos) << missing_out;
 
   // --resume on an unchanged folder computes nothing.
   const auto [resumed, resume_out] =
-      run(reeb + " index " + quoted(datasets) + " -o " + quoted(dir / "c.h5") + " --resume 2>&1");
+      run_command(reeb + " index " + shell_quoted(datasets) + " -o " + shell_quoted(dir / "c.h5") + " --resume 2>&1");
   ASSERT_EQ(resumed, 0) << resume_out;
   EXPECT_NE(resume_out.find("0 ok, 0 failed, " + std::to_string(meshes) + " already indexed"), std::string::npos)
       << resume_out;

@@ -10,24 +10,10 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdio>
 #include <fstream>
 
 namespace reebkit::test {
 namespace {
-
-/// Exit status and standard output of a shell command.
-std::pair<int, std::string> run(const std::string& command) {
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return {-1, "popen failed"};
-  std::string output;
-  char buffer[4096];
-  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) output += buffer;
-  const int status = ::pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-}
-
-std::string quoted(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
 
 /// The values of `"name": "..."` in a JSON text, in order.
 std::vector<std::string> json_names(const std::string& text) {
@@ -44,8 +30,9 @@ TEST(ReebRetrievalCli, DistancesAndQueryOnTheEmbeddedCollection) {
   const TempDir dir;
   const std::string reeb = REEB_BINARY;
   const std::filesystem::path datasets = embedded_dataset_dir();
+  const std::string collection_file = shell_quoted(dir / "c.h5");
   const auto [indexed, index_out] =
-      run(reeb + " index " + quoted(datasets) + " -o " + quoted(dir / "c.h5") + " --threads 2 2>&1");
+      run_command(reeb + " index " + shell_quoted(datasets) + " -o " + collection_file + " --threads 2 2>&1");
   ASSERT_EQ(indexed, 0) << index_out;
   const CollectionReader collection(dir / "c.h5");
   ASSERT_EQ(collection.size(), 8);
@@ -54,8 +41,8 @@ TEST(ReebRetrievalCli, DistancesAndQueryOnTheEmbeddedCollection) {
   std::ofstream(dir / "c.cla") << "PSB 1\n2 8\n\nround 0 4\nhelmet\nbunny\ncow\nanchor\n\n"
                                   "limbs 0 4\nhand\nelk\neight\ncactus\n";
   const auto [computed, distances_out] =
-      run(reeb + " distances " + quoted(dir / "c.h5") + " -o " + quoted(dir / "d.matrix") + " --cla " +
-          quoted(dir / "c.cla") + " --ascii " + quoted(dir / "d.txt") + " --threads 2 2>&1");
+      run_command(reeb + " distances " + collection_file + " -o " + shell_quoted(dir / "d.matrix") + " --cla " +
+          shell_quoted(dir / "c.cla") + " --ascii " + shell_quoted(dir / "d.txt") + " --threads 2 2>&1");
   ASSERT_EQ(computed, 0) << distances_out;
   const PairwiseDistances want =
       all_pairs_distances(collection, matrix_rows(collection, read_psb_classes(dir / "c.cla")));
@@ -78,28 +65,29 @@ TEST(ReebRetrievalCli, DistancesAndQueryOnTheEmbeddedCollection) {
   for (const QueryResult& r : query_collection(collection, collection.entry(*index), options))
     ranked.push_back(r.name);
   EXPECT_EQ(ranked.front(), "elk.off");  // d(G, G) = 0
-  const auto [by_name, by_name_out] = run(reeb + " query " + quoted(dir / "c.h5") + " elk.off -k 4 --json");
+  const auto [by_name, by_name_out] = run_command(reeb + " query " + collection_file + " elk.off -k 4 --json");
   ASSERT_EQ(by_name, 0) << by_name_out;
   EXPECT_EQ(json_names(by_name_out), ranked) << by_name_out;
   EXPECT_NE(by_name_out.find("\"query_in_collection\": true"), std::string::npos) << by_name_out;
 
   // The same mesh as a file: analysed as reeb index does, hence the same graph and ranking.
   const auto [by_file, by_file_out] =
-      run(reeb + " query " + quoted(dir / "c.h5") + " " + quoted(datasets / "elk.off") + " -k 4 --json");
+      run_command(reeb + " query " + collection_file + " " + shell_quoted(datasets / "elk.off") + " -k 4 --json");
   ASSERT_EQ(by_file, 0) << by_file_out;
   EXPECT_EQ(json_names(by_file_out), ranked) << by_file_out;
   EXPECT_NE(by_file_out.find("\"query_in_collection\": false"), std::string::npos) << by_file_out;
 
   // The text listing: a header, then one line per result with its name.
-  const auto [text, text_out] = run(reeb + " query " + quoted(dir / "c.h5") + " elk.off -k 2");
+  const auto [text, text_out] = run_command(reeb + " query " + collection_file + " elk.off -k 2");
   ASSERT_EQ(text, 0) << text_out;
   EXPECT_EQ(text_out.rfind("rank\tdistance\tclass\tname\n1\t", 0), 0u) << text_out;
   EXPECT_NE(text_out.find("\telk.off\n2\t"), std::string::npos) << text_out;
 
   // A class file naming a mesh the collection lacks.
   std::ofstream(dir / "bad.cla") << "PSB 1\n1 2\nround 0 2\nhelmet\nsphere\n";
-  const auto [bad, bad_out] = run(reeb + " distances " + quoted(dir / "c.h5") + " -o " + quoted(dir / "x.matrix") +
-                                  " --cla " + quoted(dir / "bad.cla") + " 2>&1");
+  const auto [bad, bad_out] = run_command(reeb + " distances " + collection_file + " -o " +
+                                          shell_quoted(dir / "x.matrix") + " --cla " + shell_quoted(dir / "bad.cla") +
+                                          " 2>&1");
   EXPECT_EQ(bad, 1);
   EXPECT_NE(bad_out.find("model 'sphere' of class 'round' is not in the collection"), std::string::npos) << bad_out;
 }

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 
 namespace reebkit::test {
 
@@ -20,6 +21,12 @@ std::filesystem::path embedded_dataset_dir();
 /// Unpacked shared dataset folder (e.g. "cgal_meshes", "shrec07_watertight",
 /// "tosca_dev"), or nullopt when ../shared/datasets is not beside the checkout.
 std::optional<std::filesystem::path> shared_dataset(const std::string& folder);
+
+/// Exit status and standard output of a shell command (for end-to-end tests
+/// of the `reeb` binary); -1 when it did not exit normally.
+std::pair<int, std::string> run_command(const std::string& command);
+/// `path` in single quotes, for a shell command line.
+std::string shell_quoted(const std::filesystem::path& path);
 
 }  // namespace reebkit::test
 

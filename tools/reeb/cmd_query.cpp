@@ -73,8 +73,8 @@ int run_query(const std::vector<std::string>& args) {
   po::positional_options_description positional;
   positional.add("collection", 1).add("query", 1);
   po::variables_map vm;
-  if (!parse(args, "reeb query collection.h5 MESH_OR_NAME [-k 10] [--candidates 100] [--threads N] [--json]", options, positional,
-             vm))
+  if (!parse(args, "reeb query collection.h5 MESH_OR_NAME [-k 10] [--candidates 100] [--threads N] [--json]", options,
+             positional, vm))
     return 0;
 
   const CollectionReader collection(path);

@@ -9,7 +9,8 @@
 namespace reebkit {
 
 PairwiseDistances all_pairs_distances(const std::vector<CollectionEntry>& entries, const AllPairsOptions& options) {
-  if (options.threads < 0) throw InvalidArgument("all-pairs distances: threads " + std::to_string(options.threads) + " < 0");
+  if (options.threads < 0)
+    throw InvalidArgument("all-pairs distances: threads " + std::to_string(options.threads) + " < 0");
   PairwiseDistances out;
   const std::int64_t n = static_cast<std::int64_t>(entries.size());
   for (const CollectionEntry& e : entries) out.names.push_back(e.name);
