@@ -9,6 +9,7 @@
 //   build/experiments/matching_weights shrec.h5 > results/matching_weights.md
 #include "reebkit/core/timer.h"
 #include "reebkit/matching/graph_matching.h"
+#include "reebkit/retrieval/all_pairs.h"
 
 #include <algorithm>
 #include <cmath>
@@ -51,19 +52,6 @@ Scores score(const std::vector<double>& distance, const std::vector<std::string>
   return s;
 }
 
-std::vector<double> matching_distances(const std::vector<reebkit::MatchableGraph>& graphs,
-                                       const reebkit::MatchingOptions& options) {
-  const auto n = static_cast<std::ptrdiff_t>(graphs.size());
-  std::vector<double> d(graphs.size() * graphs.size(), 0.0);
-#pragma omp parallel for schedule(dynamic, 1)
-  for (std::ptrdiff_t i = 0; i < n; ++i)
-    for (std::ptrdiff_t j = i + 1; j < n; ++j)
-      d[static_cast<std::size_t>(i * n + j)] = d[static_cast<std::size_t>(j * n + i)] =
-          reebkit::match_graphs(graphs[static_cast<std::size_t>(i)], graphs[static_cast<std::size_t>(j)], options)
-              .distance;
-  return d;
-}
-
 struct Setting {
   std::string change;
   std::function<void(reebkit::MatchingOptions&)> apply;
@@ -78,16 +66,16 @@ int main(int argc, char** argv) {
   }
   try {
     const reebkit::CollectionReader reader(argv[1]);
-    std::vector<reebkit::MatchableGraph> graphs;
+    std::vector<reebkit::CollectionEntry> entries;
     std::vector<std::string> labels;
     std::vector<std::vector<double>> signatures;
     for (std::int64_t i = 0; i < reader.size(); ++i) {
-      const reebkit::CollectionEntry entry = reader.entry(i);
+      reebkit::CollectionEntry entry = reader.entry(i);
       if (!entry.ok) continue;
       if (entry.class_label.empty()) throw std::runtime_error(entry.name + ": no class label (index with --classes)");
-      graphs.push_back(reebkit::make_matchable_graph(entry));
       labels.push_back(entry.class_label);
       signatures.push_back(entry.signature);
+      entries.push_back(std::move(entry));
     }
     const reebkit::MatchingOptions defaults;
     std::printf("# Graph matching weights: leave-one-out retrieval\n\n"
@@ -96,11 +84,11 @@ int main(int argc, char** argv) {
                 "%d refinement rounds) as stated; NN = nearest neighbour in the query's class, FT = first tier "
                 "(query excluded, ties by index).\n\n"
                 "| setting | NN | FT | all pairs (s) |\n|---|---:|---:|---:|\n",
-                argv[1], graphs.size(), defaults.attribute_weight, defaults.structure_weight, defaults.edge_weight,
+                argv[1], entries.size(), defaults.attribute_weight, defaults.structure_weight, defaults.edge_weight,
                 defaults.unmatched_cost, defaults.min_node_weight, defaults.refine_rounds);
     // For context: the 32-entry signature alone (L2), no matching.
     {
-      const std::size_t n = graphs.size();
+      const std::size_t n = entries.size();
       std::vector<double> d(n * n, 0.0);
       for (std::size_t i = 0; i < n; ++i)
         for (std::size_t j = 0; j < n; ++j)
@@ -133,10 +121,10 @@ int main(int argc, char** argv) {
         {"first defaults: attribute 1, edge 0.5", [](O& o) { o.attribute_weight = 1, o.edge_weight = 0.5; }},
     };
     for (const Setting& setting : settings) {
-      O options;
-      setting.apply(options);
+      reebkit::AllPairsOptions options;
+      setting.apply(options.matching);
       reebkit::Timer timer;
-      const std::vector<double> d = matching_distances(graphs, options);
+      const std::vector<double> d = reebkit::all_pairs_distances(entries, options).values;
       const double seconds = timer.lap() / 1000.0;
       const Scores s = score(d, labels);
       std::printf("| %s | %.3f | %.3f | %.2f |\n", setting.change.c_str(), s.nearest_neighbour, s.first_tier, seconds);
