@@ -62,6 +62,22 @@ TEST_F(ReebVariantsCli, FilesAndClassFileAgree) {
   EXPECT_EQ(files, listed);
 }
 
+TEST_F(ReebVariantsCli, MeshFilesGivenByAbsolutePathWriteIntoTheOutputFolderOnly) {
+  // Named as given, an absolute path must not turn `dir / name` into the
+  // input's own folder (which overwrote the inputs once).
+  const std::filesystem::path input = std::filesystem::absolute(dir / "in" / "cactus.off");
+  const std::string before = read_file_bytes(input);
+  ASSERT_EQ(run_variants(input, dir / "abs"), 0);
+  EXPECT_EQ(read_file_bytes(input), before);
+  EXPECT_FALSE(std::filesystem::exists(dir / "in" / "cactus_rotated.off"));
+  for (const char* suffix : kSuffixes)
+    EXPECT_TRUE(std::filesystem::exists(dir / "abs" / (std::string("cactus") + suffix + ".off"))) << suffix;
+  EXPECT_EQ(read_psb_classes(dir / "abs" / "variants.cla").front().name, "cactus");
+  // An output folder that is the input's own folder is refused, not overwritten.
+  EXPECT_NE(run_variants(input, dir / "in"), 0);
+  EXPECT_EQ(read_file_bytes(input), before);
+}
+
 TEST_F(ReebVariantsCli, EveryVariantLoadsWithTheGenusOfItsSource) {
   for (const auto& [name, genus] : {std::pair<std::string, int>{"cactus", 0}, {"eight", 2}}) {
     const Mesh original = load(dir / "in" / (name + ".off"));

@@ -34,6 +34,16 @@ namespace reebkit::cli {
 
 namespace {
 
+// The name of a mesh's outputs inside the output folder: its name as listed
+// (relative to its input folder), or its file name when it was given as a
+// path that is absolute or climbs out (`reeb variants /data/cat.off`), so
+// that nothing is ever written outside the output folder.
+std::string output_name(const std::string& listed) {
+  std::filesystem::path name = std::filesystem::path(listed).lexically_normal();
+  if (name.is_absolute() || name.empty() || *name.begin() == "..") name = name.filename();
+  return name.replace_extension().generic_string();
+}
+
 /// Leaves of the Reeb graph (nodes with a parent and no child), largest area first.
 std::vector<Index> leaves_by_area(const ReebGraph& g) {
   std::vector<char> has_parent(g.nodes.size(), 0), has_child(g.nodes.size(), 0);
@@ -116,7 +126,7 @@ int run_variants(const std::vector<std::string>& args) {
   std::filesystem::create_directories(dir);
   std::vector<std::pair<std::string, std::vector<std::string>>> classes;
   for (std::size_t i = 0; i < meshes.size(); ++i) {
-    const std::string name = std::filesystem::path(meshes[i].name).replace_extension().generic_string();
+    const std::string name = output_name(meshes[i].name);
     std::mt19937_64 rng(seed + 0x9E3779B97F4A7C15ull * (i + 1));
     CleanedMesh cleaned = load_for_command(meshes[i].path.string(), false).cleaned;
     const MeshAnalysis analysis = analyze_mesh(std::move(cleaned.components.front()));
@@ -140,6 +150,8 @@ int run_variants(const std::vector<std::string>& args) {
     for (const auto& [suffix, variant] : variants) {
       const std::filesystem::path path = dir / (name + suffix + ".off");
       std::filesystem::create_directories(path.parent_path());
+      if (std::filesystem::exists(path) && std::filesystem::equivalent(path, meshes[i].path))
+        throw Error(path.string() + ": would overwrite an input mesh; choose another output folder");
       write_off(path, variant);
       models.push_back(name + suffix);
     }
