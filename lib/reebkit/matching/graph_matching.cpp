@@ -79,10 +79,9 @@ double match_rows(const MatchableGraph& a, const MatchableGraph& b, const Matchi
   const auto un = static_cast<std::size_t>(n), um = static_cast<std::size_t>(m);
   const auto cols = static_cast<std::size_t>(m + n);
   const auto weight = [&](const MatchableGraph& g, std::size_t i) { return g.relative_area[i] + o.min_node_weight; };
-  double total_weight = 0.0, all_unmatched = 0.0;
+  double total_weight = 0.0;
   for (std::size_t i = 0; i < un; ++i) total_weight += weight(a, i);
   for (std::size_t j = 0; j < um; ++j) total_weight += weight(b, j);
-  all_unmatched = o.unmatched_cost * total_weight;
 
   w.dissimilarity.resize(un * um);
   for (std::size_t i = 0; i < un; ++i) {
@@ -120,19 +119,25 @@ double match_rows(const MatchableGraph& a, const MatchableGraph& b, const Matchi
     }
     if (round > 0 && w.forward == w.previous) break;
   }
-  // The cost of the final correspondence, its edge term included.
-  double total = all_unmatched;
+  // The cost of the final correspondence, its edge term included, summed
+  // term by term (matched pairs, then unmatched nodes) so that identical
+  // graphs come out at exactly 0.
+  double total = 0.0;
   for (std::size_t i = 0; i < un; ++i) {
     const std::int32_t j = w.forward[i];
-    if (j < 0) continue;
+    if (j < 0) {
+      total += o.unmatched_cost * weight(a, i);
+      continue;
+    }
     const auto uj = static_cast<std::size_t>(j);
     double d = w.dissimilarity[i * um + uj];
     if (o.edge_weight > 0.0)
       d += o.edge_weight * edge_inconsistency(a, b, static_cast<std::int32_t>(i), j, w.forward, w.backward);
-    const double wi = weight(a, i), wj = weight(b, uj);
-    total += 0.5 * (wi + wj) * d - o.unmatched_cost * (wi + wj);
+    total += 0.5 * (weight(a, i) + weight(b, uj)) * d;
   }
-  return total_weight > 0.0 ? std::max(0.0, total) / total_weight : 0.0;
+  for (std::size_t j = 0; j < um; ++j)
+    if (w.backward[j] < 0) total += o.unmatched_cost * weight(b, j);
+  return total_weight > 0.0 ? total / total_weight : 0.0;
 }
 
 }  // namespace
