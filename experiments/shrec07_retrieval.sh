@@ -8,7 +8,7 @@
 #
 # BUILD_DIR: a build with the targets reeb and baselines, and the datasets
 # unpacked (ctest -R unpack_datasets). REPORT_DIR (default results/shrec07/):
-# report.md, pr.csv, pr.png, pr.svg. The collection file and the distance
+# report.md, pr.csv, pr.png, pr.svg, failing_queries.png. The collection file and the distance
 # matrices are derived from academic-use data: they stay in
 # BUILD_DIR/shrec07_retrieval/ and are never committed. THREADS (default 2)
 # sets the threads of every step.
@@ -51,4 +51,7 @@ step "baselines: D2 and geodesic histogram distances" \
 step "evaluation report" \
   "$reeb" eval "$work/reebkit.matrix" --name reebkit --cla "$cla" -o "$report" \
     --compare "$work/baseline-d2.matrix:D2" "$work/baseline-geodesic.matrix:geodesic-histogram"
-echo "report: $report/report.md"
+step "pictures of the worst reebkit queries" \
+  /usr/bin/python3 "$source_dir/tools/figures/query_montage.py" "$work/reebkit.matrix" "$cla" "$data" \
+    "$report/failing_queries.png" --queries 4 --results 4
+echo "report: $report/report.md, failing queries: $report/failing_queries.png"
