@@ -32,11 +32,7 @@ CollectionEntry entry_for(const std::string& spec) {
     if (!entry.ok) throw Error(path + ": mesh '" + name + "' failed when indexed: " + entry.error);
     return entry;
   }
-  LoadedMesh loaded = load_for_command(spec, false);
-  const MeshAnalysis analysis = analyze_mesh(std::move(loaded.cleaned.components.front()));
-  CollectionEntry entry = make_collection_entry(analysis, compute_attributes(analysis));
-  entry.name = spec;
-  return entry;
+  return analyze_mesh_file(spec, spec);
 }
 
 std::string node_label(const CollectionEntry& e, std::int32_t node) {

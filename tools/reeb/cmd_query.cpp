@@ -20,11 +20,7 @@ namespace {
 CollectionEntry query_entry(const CollectionReader& collection, const std::string& query,
                             const AnalysisOptions& analysis) {
   if (const auto index = collection.find(query)) return collection.entry(*index);
-  CleanedMesh cleaned = load_mesh(query);
-  const MeshAnalysis result = analyze_mesh(std::move(cleaned.components.front()), analysis);
-  CollectionEntry entry = make_collection_entry(result, compute_attributes(result));
-  entry.name = query;
-  return entry;
+  return analyze_mesh_file(query, query, analysis);
 }
 
 void write_json(std::ostream& out, const std::string& collection, const std::string& query, bool in_collection,

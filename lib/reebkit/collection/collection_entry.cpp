@@ -1,5 +1,8 @@
 #include "reebkit/collection/collection_entry.h"
 
+#include "reebkit/core/timer.h"
+#include "reebkit/mesh/load_mesh.h"
+
 #include "reebkit/core/error.h"
 #include "reebkit/mesh/hole_filling.h"
 
@@ -46,6 +49,22 @@ CollectionEntry make_collection_entry(const MeshAnalysis& analysis, const GraphA
   out.edge_attributes = attributes.edge;
   out.signature = attributes.signature;
   return out;
+}
+
+CollectionEntry analyze_mesh_file(const std::filesystem::path& path, std::string name,
+                                  const AnalysisOptions& options) {
+  Timer timer;
+  CleanedMesh cleaned = load_mesh(path);
+  const double load_ms = timer.lap();
+  const MeshAnalysis analysis = analyze_mesh(std::move(cleaned.components.front()), options);
+  timer.lap();
+  const GraphAttributes attributes = compute_attributes(analysis);
+  const double attributes_ms = timer.lap();
+  CollectionEntry entry = make_collection_entry(analysis, attributes);
+  entry.name = std::move(name);
+  entry.timings[kTimeLoad] = load_ms;
+  entry.timings[kTimeAttributes] = attributes_ms;
+  return entry;
 }
 
 CollectionEntry failed_collection_entry(std::string name, std::string class_label, std::uint64_t content_hash,

@@ -7,6 +7,9 @@
 #include "reebkit/attributes/graph_attributes.h"
 #include "reebkit/store/collection_file.h"
 
+#include <filesystem>
+#include <string>
+
 namespace reebkit {
 
 /// The graph part of an entry: nodes (type, end, birth vertex, vertex
@@ -19,6 +22,12 @@ namespace reebkit {
 /// \pre analysis.reeb has been built; `attributes` are compute_attributes(analysis).
 ///      Throws InvalidArgument otherwise.
 CollectionEntry make_collection_entry(const MeshAnalysis& analysis, const GraphAttributes& attributes);
+
+/// Reads the mesh file at `path` (its largest component), analyses it,
+/// computes its attributes and returns its entry, named `name`, with the
+/// load and attribute times filled in. Errors propagate (they name the file).
+CollectionEntry analyze_mesh_file(const std::filesystem::path& path, std::string name,
+                                  const AnalysisOptions& options = {});
 
 /// A failed entry: ok = false, `error`, NaN signature, no graph.
 CollectionEntry failed_collection_entry(std::string name, std::string class_label, std::uint64_t content_hash,

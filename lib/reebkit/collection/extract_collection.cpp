@@ -4,7 +4,6 @@
 #include "reebkit/core/error.h"
 #include "reebkit/core/timer.h"
 #include "reebkit/io/content_hash.h"
-#include "reebkit/mesh/load_mesh.h"
 #include "reebkit/output/json_writer.h"
 
 #include <omp.h>
@@ -36,19 +35,9 @@ class Stopwatch {
 CollectionEntry compute_entry(const MeshInput& input, std::uint64_t hash, const std::string& class_label,
                               const AnalysisOptions& options) {
   try {
-    Timer timer;
-    CleanedMesh cleaned = load_mesh(input.path);
-    const double load_ms = timer.lap();
-    const MeshAnalysis analysis = analyze_mesh(std::move(cleaned.components.front()), options);
-    timer.lap();
-    const GraphAttributes attributes = compute_attributes(analysis);
-    const double attributes_ms = timer.lap();
-    CollectionEntry entry = make_collection_entry(analysis, attributes);
-    entry.name = input.name;
+    CollectionEntry entry = analyze_mesh_file(input.path, input.name, options);
     entry.class_label = class_label;
     entry.content_hash = hash;
-    entry.timings[kTimeLoad] = load_ms;
-    entry.timings[kTimeAttributes] = attributes_ms;
     return entry;
   } catch (const std::exception& e) {
     return failed_collection_entry(input.name, class_label, hash, e.what());
