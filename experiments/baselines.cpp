@@ -46,12 +46,6 @@ constexpr int kD2Samples = 1024;     // 1024 points: 523,776 pairs
 constexpr double kD2Range = 4.0;     // D2 bins cover [0, 4 x mean distance); beyond goes to the last bin
 constexpr int kGeodesicSources = 64;
 
-double triangle_area(const Mesh& m, Index f) {
-  const Vec3 p0 = m.vertices.row(m.triangles(f, 0)), p1 = m.vertices.row(m.triangles(f, 1)),
-             p2 = m.vertices.row(m.triangles(f, 2));
-  return 0.5 * (p1 - p0).cross(p2 - p0).norm();
-}
-
 void add(Histogram& h, double x, double weight) {
   const int bin = std::clamp(static_cast<int>(x * kBins), 0, kBins - 1);
   h[static_cast<std::size_t>(bin)] += weight;

@@ -111,16 +111,6 @@ const std::vector<Case>& cases() {
   return all;
 }
 
-/// Area of the triangles of `mesh`.
-double surface_area(const Mesh& mesh) {
-  double area = 0.0;
-  for (Index t = 0; t < mesh.num_triangles(); ++t) {
-    const Vec3 a = mesh.vertices.row(mesh.triangles(t, 0)), b = mesh.vertices.row(mesh.triangles(t, 1)),
-               c = mesh.vertices.row(mesh.triangles(t, 2));
-    area += 0.5 * (b - a).cross(c - a).norm();
-  }
-  return area;
-}
 
 TEST(GraphAttributes, NamesAreDistinctSnakeCase) {
   std::set<std::string> seen;

@@ -155,8 +155,7 @@ TriangleSums triangle_sums(const Mesh& mesh, Index original_vertices, const std:
     const std::array<Index, 3> label = {reeb.vertex_node[at(v[0])], reeb.vertex_node[at(v[1])],
                                         reeb.vertex_node[at(v[2])]};
     if (v[0] < original_vertices && v[1] < original_vertices && v[2] < original_vertices) {  // not a hole fan
-      const double area =
-          0.5 * (point(mesh, v[1]) - point(mesh, v[0])).cross(point(mesh, v[2]) - point(mesh, v[0])).norm();
+      const double area = triangle_area(mesh, t);
       sums.total_area += area;
       for (const Index node : label) sums.node_area[at(node)] += area / 3.0;
     }

@@ -46,4 +46,19 @@ struct Mesh {
   Index source_index(Index v) const { return source_vertex.empty() ? v : source_vertex[v]; }
 };
 
+/// Area of triangle t of `mesh`.
+inline double triangle_area(const Mesh& mesh, Index t) {
+  const Vec3 a = mesh.vertices.row(mesh.triangles(t, 0));
+  const Vec3 b = mesh.vertices.row(mesh.triangles(t, 1));
+  const Vec3 c = mesh.vertices.row(mesh.triangles(t, 2));
+  return 0.5 * (b - a).cross(c - a).norm();
+}
+
+/// Total area of the triangles of `mesh`.
+inline double surface_area(const Mesh& mesh) {
+  double area = 0.0;
+  for (Index t = 0; t < mesh.num_triangles(); ++t) area += triangle_area(mesh, t);
+  return area;
+}
+
 }  // namespace reebkit

@@ -75,12 +75,8 @@ std::vector<std::vector<Index>> boundary_loops(const Triangles& triangles, Index
 std::vector<double> component_area_by_vertex(const Mesh& mesh) {
   const ComponentLabels labels = connected_components(mesh.triangles, mesh.num_vertices());
   std::vector<double> area(static_cast<std::size_t>(labels.count), 0.0);
-  for (Index t = 0; t < mesh.num_triangles(); ++t) {
-    const Vec3 a = mesh.vertices.row(mesh.triangles(t, 0));
-    const Vec3 b = mesh.vertices.row(mesh.triangles(t, 1));
-    const Vec3 c = mesh.vertices.row(mesh.triangles(t, 2));
-    area[static_cast<std::size_t>(labels.vertex_component[mesh.triangles(t, 0)])] += 0.5 * (b - a).cross(c - a).norm();
-  }
+  for (Index t = 0; t < mesh.num_triangles(); ++t)
+    area[static_cast<std::size_t>(labels.vertex_component[mesh.triangles(t, 0)])] += triangle_area(mesh, t);
   std::vector<double> by_vertex(static_cast<std::size_t>(mesh.num_vertices()));
   for (Index v = 0; v < mesh.num_vertices(); ++v)
     by_vertex[static_cast<std::size_t>(v)] = area[static_cast<std::size_t>(labels.vertex_component[v])];

@@ -278,11 +278,6 @@ std::vector<Mesh> split_components(const Mesh& mesh, const ComponentLabels& labe
   return parts;
 }
 
-double triangle_area(const Mesh& mesh, Index t) {
-  const Vec3 a = point(mesh.vertices, mesh.triangles(t, 0));
-  return 0.5 * (point(mesh.vertices, mesh.triangles(t, 1)) - a).cross(point(mesh.vertices, mesh.triangles(t, 2)) - a).norm();
-}
-
 }  // namespace
 
 CleanedMesh clean_mesh(const PolygonSoup& soup, const CleanupOptions& options) {

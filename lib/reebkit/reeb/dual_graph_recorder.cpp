@@ -108,10 +108,7 @@ ReebGraph DualGraphRecorder::finish() {
   // One third of each triangle's area to each of its corners (section 5.2).
   std::vector<double> vertex_area(static_cast<std::size_t>(mesh.num_vertices()), 0.0);
   for (Index t = 0; t < mesh.num_triangles(); ++t) {
-    const Vec3 a = mesh.vertices.row(mesh.triangles(t, 0));
-    const Vec3 b = mesh.vertices.row(mesh.triangles(t, 1));
-    const Vec3 c = mesh.vertices.row(mesh.triangles(t, 2));
-    const double third = (b - a).cross(c - a).norm() / 6.0;
+    const double third = triangle_area(mesh, t) / 3.0;
     for (int k = 0; k < 3; ++k) vertex_area[static_cast<std::size_t>(mesh.triangles(t, k))] += third;
   }
   std::vector<Vec3> position_sum(graph_.nodes.size(), Vec3::Zero());  // unweighted, for area-less regions
