@@ -9,7 +9,6 @@
 namespace reebkit {
 namespace {
 
-
 TEST(Resampling, KeepsTheSurfaceItsGenusAndItsArea) {
   for (const Mesh& mesh : {make_torus(24, 12), make_star(StarOptions{4, 3}), make_grid(6, 5), make_cube()}) {
     const MeshTopology before = analyze_topology(mesh);
