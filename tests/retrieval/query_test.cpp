@@ -112,8 +112,11 @@ TEST(QueryCollection, RejectsBadOptionsAndFailedQueries) {
   options.threads = -1;
   EXPECT_THROW(query_collection(collection, query, options), InvalidArgument);
   EXPECT_THROW(query_collection(collection, generated_entries()[6], QueryOptions{}), InvalidArgument);
-  const SearchableCollection other{{}, SignatureIndex({0, 0}, 2)};
+  const SearchableCollection other{{}, SignatureIndex({0, 0}, 2), {}};
   EXPECT_THROW(query_collection(other, query, QueryOptions{}), InvalidArgument);
+  SearchableCollection no_graphs = load_searchable(collection);
+  no_graphs.graphs.clear();
+  EXPECT_THROW(query_collection(no_graphs, query, QueryOptions{}), InvalidArgument);
 }
 
 }  // namespace
