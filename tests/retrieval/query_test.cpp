@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <random>
 
 namespace reebkit::test {
 namespace {
@@ -95,6 +96,73 @@ TEST(QueryCollection, FewCandidatesRerankTheNearestSignatures) {
   const std::vector<QueryResult> once = query_collection(collection, query, options);
   ASSERT_EQ(once.size(), got.size());
   for (std::size_t r = 0; r < got.size(); ++r) EXPECT_EQ(once[r].index, got[r].index);
+}
+
+/// `e` with its node attributes scaled by 1 + U(-amount, amount) and its
+/// signature moved by U(-amount, amount) (clamped to [0, 1]).
+CollectionEntry jittered(CollectionEntry e, double amount, std::mt19937& random) {
+  std::uniform_real_distribution<double> u(-amount, amount);
+  for (double& a : e.node_attributes) a *= 1.0 + u(random);
+  for (double& x : e.signature) x = std::clamp(x + u(random), 0.0, 1.0);
+  return e;
+}
+
+TEST(QueryCollection, PruningGivesTheRankingOfMatchingEveryCandidate) {
+  // The generated entries and 10 jittered copies of each (133 entries, many
+  // near-ties); queries: the entries and other jittered copies; every k and
+  // number of candidates, 1 and 2 threads: skipping candidates by their
+  // lower bound changes nothing in the ranking.
+  std::mt19937 random(3);
+  const TempDir dir;
+  {
+    CollectionWriter writer(dir / "c.h5", Provenance{}, false);
+    for (const CollectionEntry& e : generated_entries()) writer.append(e);
+    for (int copy = 0; copy < 10; ++copy)
+      for (const CollectionEntry& e : generated_entries()) {
+        if (!e.ok) continue;
+        CollectionEntry c = jittered(e, copy < 5 ? 0.02 : 0.2, random);
+        c.name += "-copy" + std::to_string(copy);
+        writer.append(c);
+      }
+    writer.close();
+  }
+  const SearchableCollection searchable = load_searchable(CollectionReader(dir / "c.h5"));
+  std::vector<CollectionEntry> queries;
+  for (const CollectionEntry& e : generated_entries()) {
+    if (!e.ok) continue;
+    queries.push_back(e);
+    queries.push_back(jittered(e, 0.05, random));
+  }
+  int cases = 0, pruned = 0;
+  for (const CollectionEntry& query : queries)
+    for (const int k : {1, 3, 10})
+      for (const int candidates : {10, 40, 133})
+        for (const int threads : {1, 2}) {
+          QueryOptions options;
+          options.k = k;
+          options.candidates = candidates;
+          options.threads = threads;
+          options.prune = false;
+          const std::vector<QueryResult> want = query_collection(searchable, query, options);
+          options.prune = true;
+          const std::vector<QueryResult> got = query_collection(searchable, query, options);
+          ASSERT_EQ(got.size(), want.size());
+          for (std::size_t r = 0; r < got.size(); ++r) {
+            EXPECT_EQ(got[r].index, want[r].index) << query.name << " k " << k << " rank " << r;
+            EXPECT_EQ(got[r].distance, want[r].distance);
+            EXPECT_EQ(got[r].signature_distance, want[r].signature_distance);
+            EXPECT_EQ(got[r].name, want[r].name);
+          }
+          // Not vacuous: mostly some candidate is skipped (its bound is above the k-th distance).
+          ++cases;
+          for (const SignatureNeighbour& n : searchable.index.nearest(query.signature, candidates))
+            if (match_lower_bound(make_matchable_graph(query), searchable.graphs[static_cast<std::size_t>(n.row)]) >
+                want.back().distance) {
+              ++pruned;
+              break;
+            }
+        }
+  EXPECT_GT(pruned, cases / 2) << "of " << cases;
 }
 
 TEST(QueryCollection, RejectsBadOptionsAndFailedQueries) {

@@ -74,4 +74,14 @@ GraphMatch match_graphs(const CollectionEntry& a, const CollectionEntry& b, cons
 /// once the calling thread's buffers have grown (for all-pairs distances).
 GraphMatch match_graphs(const MatchableGraph& a, const MatchableGraph& b, const MatchingOptions& options = {});
 
+/// A lower bound on match_graphs(a, b, options).distance in O(n m) (one node
+/// cost per pair of nodes, no assignment solved), for skipping candidates
+/// that cannot make a ranking (query_collection): every node takes its
+/// cheapest option (a partner or deletion) as if partners need not be
+/// distinct, counted by the rows and by the columns of the padded problem,
+/// the larger of the two. Valid for any MatchingOptions with min_node_weight
+/// >= 0 (proof sketch in graph_matching.cpp); symmetric; below 0 for a graph
+/// and itself.
+double match_lower_bound(const MatchableGraph& a, const MatchableGraph& b, const MatchingOptions& options = {});
+
 }  // namespace reebkit

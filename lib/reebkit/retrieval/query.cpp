@@ -5,6 +5,9 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <limits>
+#include <numeric>
+#include <queue>
 #include <string>
 
 namespace reebkit {
@@ -34,17 +37,54 @@ std::vector<QueryResult> query_collection(const SearchableCollection& collection
   for (const SignatureNeighbour& n : nearest)
     if (n.row >= static_cast<std::int64_t>(collection.entries.size()))
       throw InvalidArgument("query: the signature index does not match the collection");
-  std::vector<QueryResult> ranked(nearest.size());
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
   const auto count = static_cast<std::int64_t>(nearest.size());
+  const auto graph_of = [&](std::int64_t c) -> const MatchableGraph& {
+    return collection.graphs[static_cast<std::size_t>(nearest[static_cast<std::size_t>(c)].row)];
+  };
+
+  // Pruning keeps the ranking exact: the k-th best distance among any of
+  // the candidates matched so far is >= the k-th best among all of them, and
+  // a candidate of the final ranking has bound <= distance <= that, so it is
+  // never skipped (ties included: skipping needs bound > threshold).
+  std::vector<double> bound(nearest.size(), -std::numeric_limits<double>::infinity());
+  std::vector<std::int64_t> order(nearest.size());
+  std::iota(order.begin(), order.end(), std::int64_t{0});
+  if (options.prune) {
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (std::int64_t c = 0; c < count; ++c)
+      bound[static_cast<std::size_t>(c)] = match_lower_bound(query_graph, graph_of(c), options.matching);
+    std::sort(order.begin(), order.end(), [&](std::int64_t x, std::int64_t y) {
+      const double bx = bound[static_cast<std::size_t>(x)], by = bound[static_cast<std::size_t>(y)];
+      return bx != by ? bx < by : x < y;
+    });
+  }
+  std::vector<double> distance(nearest.size());
+  std::vector<char> matched(nearest.size(), 0);
+  std::priority_queue<double> best;  // the k smallest distances so far, the largest on top
+  double kth = std::numeric_limits<double>::infinity();
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-  for (std::int64_t c = 0; c < count; ++c) {
-    const SignatureNeighbour& n = nearest[static_cast<std::size_t>(c)];
-    const auto row = static_cast<std::size_t>(n.row);
-    const CollectionEntry& entry = collection.entries[row];
-    ranked[static_cast<std::size_t>(c)] = {
-        n.row, entry.name, entry.class_label,
-        match_graphs(query_graph, collection.graphs[row], options.matching).distance, n.distance};
+  for (std::int64_t r = 0; r < count; ++r) {
+    const auto c = static_cast<std::size_t>(order[static_cast<std::size_t>(r)]);
+    double threshold = 0.0;
+#pragma omp critical(reebkit_query_best)
+    threshold = kth;
+    if (bound[c] > threshold) continue;
+    const double d = match_graphs(query_graph, graph_of(order[static_cast<std::size_t>(r)]), options.matching).distance;
+#pragma omp critical(reebkit_query_best)
+    {
+      distance[c] = d;
+      matched[c] = 1;
+      best.push(d);
+      if (best.size() > static_cast<std::size_t>(options.k)) best.pop();
+      if (best.size() == static_cast<std::size_t>(options.k)) kth = best.top();
+    }
+  }
+  std::vector<QueryResult> ranked;
+  for (std::size_t c = 0; c < nearest.size(); ++c) {
+    if (!matched[c]) continue;
+    const CollectionEntry& entry = collection.entries[static_cast<std::size_t>(nearest[c].row)];
+    ranked.push_back({nearest[c].row, entry.name, entry.class_label, distance[c], nearest[c].distance});
   }
   std::sort(ranked.begin(), ranked.end(), [](const QueryResult& a, const QueryResult& b) {
     return a.distance != b.distance ? a.distance < b.distance : a.index < b.index;

@@ -23,6 +23,10 @@ struct QueryOptions {
   /// than waking a second thread costs on a busy machine (bench/retrieval_bench);
   /// more threads pay for large query graphs (100+ nodes).
   int threads = 1;
+  /// Match the candidates by increasing match_lower_bound and skip those
+  /// whose bound is above the k-th best distance found so far: the same
+  /// ranking with fewer matches. false: match every candidate.
+  bool prune = true;
   MatchingOptions matching;  ///< the cost model of match_graphs
 };
 
