@@ -2,10 +2,10 @@
 
 #include "reebkit/core/error.h"
 #include "reebkit/features/critical_points.h"
-#include "reebkit/geodesic/dijkstra.h"
 
 #include <algorithm>
 #include <limits>
+#include <memory>
 #include <string>
 #include <tuple>
 
@@ -19,7 +19,7 @@ constexpr Index kCanonicalSeed = 0;
 struct DiameterEnds {
   Index s1 = kInvalidIndex, s2 = kInvalidIndex;
   std::vector<double> f1, f2;  // distances from s1 and from s2
-  int passes = 0;              // full Dijkstra passes spent
+  int passes = 0;              // full geodesic passes spent
 
   double length() const { return f1[static_cast<std::size_t>(s2)]; }
   bool longer_than(const DiameterEnds& o) const {
@@ -30,7 +30,7 @@ struct DiameterEnds {
 
 // Double sweep from `seed`, repeated (v_s1 <- v_s2, v_s2 <- farthest) until
 // the pair is mutually farthest or `max_extra_sweeps` more passes were spent.
-DiameterEnds find_diameter_ends(DijkstraSolver& solver, Index seed, int max_extra_sweeps) {
+DiameterEnds find_diameter_ends(GeodesicSolver& solver, Index seed, int max_extra_sweeps) {
   DiameterEnds e;
   const DistanceField& field = solver.run({seed});
   if (field.reached != static_cast<Index>(field.distance.size()))
@@ -70,7 +70,8 @@ FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOption
     throw InvalidArgument("extract_feature_points: epsilon must lie in (0, 1], got " + std::to_string(options.epsilon));
 
   FeaturePoints out;
-  DijkstraSolver solver(graph);
+  const std::unique_ptr<GeodesicSolver> geodesic = make_geodesic_solver(graph, options.geodesic);
+  GeodesicSolver& solver = *geodesic;
 
   // Eqs. (2) and (4): v_s1 farthest from v_r, v_s2 farthest from v_s1, then
   // further sweeps until the two are mutually farthest. The search runs from
@@ -109,9 +110,9 @@ FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOption
   // Eq. (6): v belongs to F when an extremum of f1 and one of f2 lie within
   // epsilon of it, and no feature point already taken lies within epsilon.
   const double radius = options.epsilon * out.diameter;
-  const DijkstraOptions near{radius};
-  const std::vector<double> to_e1 = dijkstra(graph, out.extrema1, near).distance;
-  const std::vector<double> to_e2 = dijkstra(graph, out.extrema2, near).distance;
+  const GeodesicOptions near{radius};
+  const std::vector<double> to_e1 = solver.run(out.extrema1, near).distance;
+  const std::vector<double> to_e2 = solver.run(out.extrema2, near).distance;
   std::vector<Index> candidates;
   std::set_union(out.extrema1.begin(), out.extrema1.end(), out.extrema2.begin(), out.extrema2.end(),
                  std::back_inserter(candidates));

@@ -1,15 +1,14 @@
 #include "reebkit/features/quotient_function.h"
 
 #include "reebkit/core/error.h"
-#include "reebkit/geodesic/dijkstra.h"
 
 #include <cmath>
 
 namespace reebkit {
 
-QuotientFunction quotient_function(const MeshGraph& graph, const std::vector<Index>& features) {
+QuotientFunction quotient_function(const MeshGraph& graph, const std::vector<Index>& features, Geodesic method) {
   if (features.empty()) throw InvalidArgument("quotient_function: no feature points");
-  DistanceField d = dijkstra(graph, features);
+  DistanceField d = geodesic_distances(graph, features, method);
   if (d.reached != graph.num_vertices())
     throw InvalidArgument("quotient_function: the mesh graph is not connected");
   QuotientFunction out;

@@ -1,8 +1,9 @@
 // The invariant quotient function f_q (Tierny et al. 2006, section 4.1.3,
 // eqs. 7-8): one minus the normalized geodesic distance to the nearest
-// feature point, computed in one multi-source Dijkstra pass.
+// feature point, computed in one multi-source geodesic pass.
 #pragma once
 
+#include "reebkit/geodesic/geodesic_solver.h"
 #include "reebkit/mesh/mesh_graph.h"
 
 #include <vector>
@@ -22,8 +23,10 @@ struct QuotientFunction {
   double normalization = 0.0;
 };
 
-/// f_q for the given feature points (vertex ids).
+/// f_q for the given feature points (vertex ids), with geodesic distances
+/// computed by `method` (that of FeatureOptions::geodesic, for consistency).
 /// \pre the graph is connected and `features` is non-empty.
-QuotientFunction quotient_function(const MeshGraph& graph, const std::vector<Index>& features);
+QuotientFunction quotient_function(const MeshGraph& graph, const std::vector<Index>& features,
+                                   Geodesic method = Geodesic::Dijkstra);
 
 }  // namespace reebkit

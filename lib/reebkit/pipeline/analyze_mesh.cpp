@@ -22,7 +22,7 @@ MeshAnalysis analyze_mesh(Mesh mesh, const AnalysisOptions& options) {
   a.timings.graph = timer.lap();
   a.features = extract_feature_points(a.graph, options.features);
   a.timings.features = timer.lap();
-  a.fq = quotient_function(a.graph, a.features.vertices);
+  a.fq = quotient_function(a.graph, a.features.vertices, options.features.geodesic);
   a.timings.quotient = timer.lap();
   if (options.reeb_graph) {
     a.reeb = build_reeb_graph(a.mesh, a.graph, a.fq.value, options.reeb);
