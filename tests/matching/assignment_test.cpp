@@ -102,6 +102,40 @@ TEST(Assignment, EqualsBruteForceUpToSeven) {
   }
 }
 
+TEST(Assignment, SolveOrLeaveIsSolveOnThePaddedMatrix) {
+  // solve_or_leave on rows x cols == solve on [cost | D] (D: 0 on the
+  // diagonal, forbidden elsewhere), assignment for assignment, ties
+  // included (small integers), with rows above and below cols; and the
+  // optimum is brute force's on the padded matrix.
+  std::mt19937 random(9);
+  std::uniform_real_distribution<double> uniform(-3.0, 2.0);
+  std::uniform_int_distribution<int> small(-2, 1);
+  AssignmentSolver solver, padded_solver;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const int rows = trial % 9, cols = trial / 9 % 12;
+    std::vector<double> cost(static_cast<std::size_t>(rows * cols));
+    for (double& c : cost) c = trial % 2 ? uniform(random) : small(random);
+    const int padded_cols = cols + rows;
+    std::vector<double> padded(static_cast<std::size_t>(rows * padded_cols), 1e12);
+    for (int i = 0; i < rows; ++i) {
+      std::copy_n(&cost[static_cast<std::size_t>(i * cols)], cols, &padded[static_cast<std::size_t>(i * padded_cols)]);
+      padded[static_cast<std::size_t>(i * padded_cols + cols + i)] = 0.0;
+    }
+    std::vector<std::int32_t> got, want;
+    const double total = solver.solve_or_leave(cost.data(), rows, cols, got);
+    const double padded_total = padded_solver.solve(padded.data(), rows, padded_cols, want);
+    for (std::int32_t& j : want)
+      if (j >= cols) j = -1;
+    ASSERT_EQ(got, want) << rows << " x " << cols << ", trial " << trial;
+    EXPECT_EQ(total, padded_total);
+    if (padded_cols <= 8) {
+      EXPECT_NEAR(total, brute_force(padded, rows, padded_cols), 1e-9) << rows << " x " << cols;
+    }
+  }
+  std::vector<std::int32_t> assignment;
+  EXPECT_THROW(solver.solve_or_leave(nullptr, -1, 2, assignment), InvalidArgument);
+}
+
 TEST(Assignment, RejectsMoreRowsThanColumns) {
   std::vector<std::int32_t> assignment;
   EXPECT_THROW(solve_assignment(std::vector<double>(6, 1.0), 3, 2, assignment), InvalidArgument);

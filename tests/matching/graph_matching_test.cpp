@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <random>
 #include <string>
@@ -238,6 +239,34 @@ TEST(GraphMatching, LowerBoundIsBelowTheDistance) {
     EXPECT_GT(bounded_away, different / 2) << "of " << different << " pairs at distance > 0.05";
   }
   for (const MatchableGraph& g : graphs) EXPECT_LT(match_lower_bound(g, g), 0.0);
+}
+
+TEST(GraphMatching, DistanceUpToALimitIsExactBelowIt) {
+  // match_distance_up_to: the distance itself when it is <= the limit,
+  // something above the limit otherwise; limits at, around and far from
+  // the distances of real and random pairs.
+  std::mt19937 random(8);
+  std::vector<MatchableGraph> graphs;
+  for (const auto& e : shapes()) {
+    graphs.push_back(make_matchable_graph(e));
+    graphs.push_back(make_matchable_graph(jittered(e, 0.05, 6)));
+  }
+  for (int k = 0; k < 8; ++k) graphs.push_back(make_matchable_graph(random_graph(2 + 5 * k, k, random)));
+  for (const MatchingOptions& options : varied_options())
+    for (const MatchableGraph& a : graphs)
+      for (const MatchableGraph& b : graphs) {
+        const double distance = match_graphs(a, b, options).distance;
+        for (const double limit : {-1.0, 0.0, 0.5 * distance, std::nextafter(distance, -1.0), distance,
+                                   std::nextafter(distance, 2.0), 0.9 * distance + 0.01, 1.0}) {
+          const double got = match_distance_up_to(a, b, limit, options);
+          if (distance <= limit) {
+            ASSERT_EQ(got, distance) << a.num_nodes << " vs " << b.num_nodes << ", limit " << limit;
+          } else {
+            ASSERT_GT(got, limit) << a.num_nodes << " vs " << b.num_nodes;
+            ASSERT_LE(got, distance);
+          }
+        }
+      }
 }
 
 TEST(GraphMatching, RejectsFailedEntries) {

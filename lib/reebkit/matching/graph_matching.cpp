@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace reebkit {
@@ -67,10 +68,16 @@ double edge_inconsistency(const MatchableGraph& a, const MatchableGraph& b, std:
 /// Buffers reused by every match on a thread.
 struct Workspace {
   std::vector<double> dissimilarity;  // n x m
-  std::vector<double> cost;           // n x (m + n)
+  std::vector<double> cost;           // n x m
   std::vector<std::int32_t> assignment, forward, backward, previous;
   AssignmentSolver solver;
 };
+
+/// The calling thread's buffers (match_graphs and match_distance_up_to).
+Workspace& thread_workspace() {
+  thread_local Workspace workspace;
+  return workspace;
+}
 
 /// Whether a should give the rows of the assignment: the graph with fewer
 /// nodes, ties broken by the feature arrays and then the adjacency, so that
@@ -84,12 +91,15 @@ bool rows_first(const MatchableGraph& a, const MatchableGraph& b) {
 /// The match with a's nodes as rows. \pre a.num_nodes <= b.num_nodes.
 /// Padded problem reduced to rows: matching i to j costs
 /// pair(i, j) - delete(i) - insert(j), and each row i has its own "delete"
-/// column of cost 0; the optimum plus the sum of all deletion and insertion
-/// costs is the optimum of the (n + m) x (n + m) padded matrix.
-double match_rows(const MatchableGraph& a, const MatchableGraph& b, const MatchingOptions& o, Workspace& w) {
+/// column of cost 0 (AssignmentSolver::solve_or_leave); the optimum plus the
+/// sum of all deletion and insertion costs is the optimum of the
+/// (n + m) x (n + m) padded matrix. Returns the distance, or a lower bound
+/// of it above `limit` as soon as the first solve gives one (w.forward is
+/// then not final).
+double match_rows(const MatchableGraph& a, const MatchableGraph& b, const MatchingOptions& o, Workspace& w,
+                  double limit = std::numeric_limits<double>::infinity()) {
   const std::int32_t n = a.num_nodes, m = b.num_nodes;
   const auto un = static_cast<std::size_t>(n), um = static_cast<std::size_t>(m);
-  const auto cols = static_cast<std::size_t>(m + n);
   const auto weight = [&](const MatchableGraph& g, std::size_t i) { return node_weight(g, i, o); };
   double total_weight = 0.0;
   for (std::size_t i = 0; i < un; ++i) total_weight += weight(a, i);
@@ -101,15 +111,14 @@ double match_rows(const MatchableGraph& a, const MatchableGraph& b, const Matchi
     for (std::size_t j = 0; j < um; ++j)
       w.dissimilarity[i * um + j] = node_dissimilarity(x, &b.features[j * MatchableGraph::kFeatureCount], o);
   }
-  w.cost.resize(un * cols);
+  w.cost.resize(un * um);
   w.forward.assign(un, -1);
   w.backward.assign(um, -1);
-  constexpr double kForbidden = 1e12;  // finite: the solver needs finite costs
   const int rounds = std::max(0, o.refine_rounds);
   for (int round = 0; round <= rounds; ++round) {
     for (std::size_t i = 0; i < un; ++i) {
       const double wi = weight(a, i);
-      double* row = &w.cost[i * cols];
+      double* row = &w.cost[i * um];
       for (std::size_t j = 0; j < um; ++j) {
         double d = w.dissimilarity[i * um + j];
         if (round > 0)
@@ -118,18 +127,34 @@ double match_rows(const MatchableGraph& a, const MatchableGraph& b, const Matchi
         const double wj = weight(b, j);
         row[j] = pair_cost(wi, wj, d) - o.unmatched_cost * (wi + wj);
       }
-      std::fill(row + um, row + cols, kForbidden);
-      row[um + i] = 0.0;
     }
-    w.solver.solve(w.cost.data(), n, static_cast<int>(cols), w.assignment);
+    w.solver.solve_or_leave(w.cost.data(), n, m, w.assignment);
     w.previous.swap(w.forward);
     w.forward.assign(un, -1);
     w.backward.assign(um, -1);
     for (std::size_t i = 0; i < un; ++i) {
       const std::int32_t j = w.assignment[i];
-      if (j < m) w.forward[i] = j, w.backward[static_cast<std::size_t>(j)] = static_cast<std::int32_t>(i);
+      if (j >= 0) w.forward[i] = j, w.backward[static_cast<std::size_t>(j)] = static_cast<std::int32_t>(i);
     }
     if (round > 0 && w.forward == w.previous) break;
+    if (round == 0 && round < rounds && limit < std::numeric_limits<double>::infinity() && total_weight > 0.0) {
+      // The node-only cost of this correspondence, optimal for node costs,
+      // is at most that of the final one, which is at most the final cost
+      // (its edge terms are >= 0, node weights being >= 0): a lower bound,
+      // lowered by 1e-9 of its terms for rounding as in match_lower_bound.
+      double node_only = 0.0, magnitude = 0.0;
+      const auto add = [&](double term) { node_only += term, magnitude += std::abs(term); };
+      for (std::size_t i = 0; i < un; ++i) {
+        const std::int32_t j = w.forward[i];
+        add(j < 0 ? unmatched_node_cost(weight(a, i), o)
+                  : pair_cost(weight(a, i), weight(b, static_cast<std::size_t>(j)),
+                              w.dissimilarity[i * um + static_cast<std::size_t>(j)]));
+      }
+      for (std::size_t j = 0; j < um; ++j)
+        if (w.backward[j] < 0) add(unmatched_node_cost(weight(b, j), o));
+      const double bound = (node_only - 1e-9 * magnitude) / total_weight;
+      if (bound > limit) return bound;
+    }
   }
   // The cost of the final correspondence, its edge term included, summed
   // term by term (matched pairs, then unmatched nodes) so that identical
@@ -199,7 +224,7 @@ MatchableGraph make_matchable_graph(const CollectionEntry& entry) {
 }
 
 GraphMatch match_graphs(const MatchableGraph& a, const MatchableGraph& b, const MatchingOptions& options) {
-  thread_local Workspace workspace;
+  Workspace& workspace = thread_workspace();
   GraphMatch match;
   match.correspondence.assign(static_cast<std::size_t>(a.num_nodes), -1);
   if (rows_first(a, b)) {
@@ -270,6 +295,12 @@ double match_lower_bound(const MatchableGraph& a, const MatchableGraph& b, const
     magnitude += std::abs(column_best[j]);
   }
   return (std::max(inserts + by_rows, deletes + by_columns) - 1e-9 * magnitude) / total_weight;
+}
+
+double match_distance_up_to(const MatchableGraph& a, const MatchableGraph& b, double limit,
+                            const MatchingOptions& options) {
+  Workspace& workspace = thread_workspace();
+  return rows_first(a, b) ? match_rows(a, b, options, workspace, limit) : match_rows(b, a, options, workspace, limit);
 }
 
 GraphMatch match_graphs(const CollectionEntry& a, const CollectionEntry& b, const MatchingOptions& options) {

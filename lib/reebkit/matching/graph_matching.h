@@ -74,6 +74,14 @@ GraphMatch match_graphs(const CollectionEntry& a, const CollectionEntry& b, cons
 /// once the calling thread's buffers have grown (for all-pairs distances).
 GraphMatch match_graphs(const MatchableGraph& a, const MatchableGraph& b, const MatchingOptions& options = {});
 
+/// match_graphs(a, b, options).distance when it is <= `limit`; otherwise a
+/// value above `limit` (the distance or a lower bound of it): the refinement
+/// rounds are skipped once the first, node-only, solve shows that the
+/// distance is above `limit`. For rankings, which need the distances only up
+/// to their k-th (query_collection).
+double match_distance_up_to(const MatchableGraph& a, const MatchableGraph& b, double limit,
+                            const MatchingOptions& options = {});
+
 /// A lower bound on match_graphs(a, b, options).distance in O(n m) (one node
 /// cost per pair of nodes, no assignment solved), for skipping candidates
 /// that cannot make a ranking (query_collection): every node takes its

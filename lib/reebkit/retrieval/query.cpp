@@ -70,7 +70,11 @@ std::vector<QueryResult> query_collection(const SearchableCollection& collection
 #pragma omp critical(reebkit_query_best)
     threshold = kth;
     if (bound[c] > threshold) continue;
-    const double d = match_graphs(query_graph, graph_of(order[static_cast<std::size_t>(r)]), options.matching).distance;
+    const double d = options.prune ? match_distance_up_to(query_graph, graph_of(order[static_cast<std::size_t>(r)]),
+                                                          threshold, options.matching)
+                                   : match_graphs(query_graph, graph_of(order[static_cast<std::size_t>(r)]),
+                                                  options.matching).distance;
+    if (d > threshold) continue;  // exact or a lower bound: either way not in the ranking
 #pragma omp critical(reebkit_query_best)
     {
       distance[c] = d;
