@@ -2,6 +2,8 @@
 
 #include "reebkit/core/error.h"
 #include "reebkit/geodesic/dijkstra.h"
+#include "reebkit/geodesic/fast_marching.h"
+#include "reebkit/mesh/resampling.h"
 #include "reebkit/mesh/shapes.h"
 #include "reebkit/mesh/transform.h"
 
@@ -56,6 +58,31 @@ TEST_P(StarArms, OneFeaturePointPerArmTip) {
 
 INSTANTIATE_TEST_SUITE_P(Counts, StarArms, ::testing::Values(2, 3, 4, 5, 6, 8, 10, 12, 16));
 
+// With fast-marching geodesics: one feature point per tip, on the star and on
+// resampled copies of it (edge vertices jittered along their edges).
+TEST(FeaturePoints, FastMarchingFindsOneFeaturePointPerArmTip) {
+  FeatureOptions fmm;
+  fmm.geodesic = Geodesic::FastMarching;
+  for (const int arms : {3, 6, 10}) {
+    const StarOptions options = star(arms);
+    const Mesh base = make_star(options);
+    for (std::uint64_t seed = 0; seed <= 2; ++seed) {
+      const Mesh mesh = seed == 0 ? base : resample_mesh(base, ResamplingOptions{0.2, seed});
+      const MeshGraph g = build_mesh_graph(mesh);
+      const FeaturePoints fp = extract_feature_points(g, fmm);
+      ASSERT_EQ(fp.vertices.size(), static_cast<std::size_t>(arms)) << arms << " arms, seed " << seed;
+      EXPECT_DOUBLE_EQ(fast_marching(g, fp.source1).distance[fp.source2], fp.diameter);
+      for (const Index tip : arm_tips(mesh, options)) {
+        const DistanceField d = fast_marching(g, tip, GeodesicOptions{0.05 * fp.diameter});
+        EXPECT_EQ(std::count_if(fp.vertices.begin(), fp.vertices.end(),
+                                [&](Index f) { return d.distance[f] < 0.05 * fp.diameter; }),
+                  1)
+            << arms << " arms, seed " << seed << ", tip " << tip;
+      }
+    }
+  }
+}
+
 TEST(FeaturePoints, SingleArmShapeHasTwoEnds) {
   // One arm on a ball: an elongated shape whose two ends are both extremities.
   const FeaturePoints fp = extract_feature_points(build_mesh_graph(make_star(star(1))));
@@ -96,6 +123,21 @@ TEST(FeaturePoints, InvariantToRotationTranslationAndScale) {
     t.translation = Vec3(3.0, -7.0, 1e3) * static_cast<double>(seed);
     const auto moved = sorted(extract_feature_points(build_mesh_graph(transformed(mesh, t))).vertices);
     EXPECT_EQ(moved, reference) << "seed " << seed;
+  }
+}
+
+TEST(FeaturePoints, FastMarchingInvariantToRotationTranslationAndScale) {
+  const Mesh mesh = make_star(star(6));
+  FeatureOptions fmm;
+  fmm.geodesic = Geodesic::FastMarching;
+  const auto reference = sorted(extract_feature_points(build_mesh_graph(mesh), fmm).vertices);
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    Similarity t;
+    t.rotation = random_rotation(seed);
+    t.scale = 0.01 * static_cast<double>(seed * seed * seed * 10);
+    t.translation = Vec3(3.0, -7.0, 1e3) * static_cast<double>(seed);
+    EXPECT_EQ(sorted(extract_feature_points(build_mesh_graph(transformed(mesh, t)), fmm).vertices), reference)
+        << "seed " << seed;
   }
 }
 

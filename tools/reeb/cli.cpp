@@ -21,6 +21,15 @@ bool parse(const std::vector<std::string>& args, const std::string& usage,
   return true;
 }
 
+void add_geodesic_option(po::options_description& options, Geodesic& method) {
+  options.add_options()("geodesic",
+                        po::value<std::string>()
+                            ->default_value(geodesic_name(method))
+                            ->notifier([&method](const std::string& name) { method = parse_geodesic(name); }),
+                        "geodesic distances: dijkstra (shortest edge paths) or fmm (fast marching across the "
+                        "triangles, less sensitive to the sampling)");
+}
+
 LoadedMesh load_for_command(const std::string& path, bool all_components) {
   Timer timer;
   CleanupOptions cleanup;

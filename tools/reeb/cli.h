@@ -1,6 +1,7 @@
 // Shared plumbing of the `reeb` subcommands.
 #pragma once
 
+#include "reebkit/geodesic/geodesic_solver.h"
 #include "reebkit/mesh/load_mesh.h"
 
 #include <boost/program_options.hpp>
@@ -29,6 +30,10 @@ const std::vector<Command>& commands();
 bool parse(const std::vector<std::string>& args, const std::string& usage,
            const po::options_description& options, const po::positional_options_description& positional,
            po::variables_map& vm);
+
+/// Adds --geodesic dijkstra|fmm, which sets `method` (its current value is
+/// the default) once the options are parsed.
+void add_geodesic_option(po::options_description& options, Geodesic& method);
 
 /// A mesh read and cleaned for a subcommand, and the time that took.
 struct LoadedMesh {

@@ -2,7 +2,6 @@
 // (Tierny et al. 2006, section 4.1).
 #include "reeb/cli.h"
 #include "reebkit/core/error.h"
-#include "reebkit/geodesic/dijkstra.h"
 #include "reebkit/io/ply.h"
 #include "reebkit/mesh/hole_filling.h"
 #include "reebkit/output/colormap.h"
@@ -38,7 +37,11 @@ void write_json(const std::string& path, const std::string& mesh_path, const Fea
   std::ofstream out(path);
   if (!out) throw Error(path + ": cannot open for writing");
   JsonWriter json(out);
-  json.begin_object().field("mesh", mesh_path).field("epsilon", options.epsilon).field("load_ms", load_ms);
+  json.begin_object()
+      .field("mesh", mesh_path)
+      .field("epsilon", options.epsilon)
+      .field("geodesic", geodesic_name(options.geodesic))
+      .field("load_ms", load_ms);
   json.key("components").begin_array();
   for (const MeshAnalysis& r : results) {
     json.begin_object()
@@ -70,14 +73,15 @@ void write_json(const std::string& path, const std::string& mesh_path, const Fea
 // around each feature point painted red so that the points are visible.
 // Shows the surface as read: vertices added by hole filling (the last ones)
 // are left out.
-void write_fq_ply(const std::string& path, const MeshAnalysis& r) {
+void write_fq_ply(const std::string& path, const MeshAnalysis& r, Geodesic geodesic) {
   const Mesh surface = original_surface(r.mesh);
   const auto n = static_cast<std::size_t>(surface.num_vertices());
   const std::vector<double> fq(r.fq.value.begin(), r.fq.value.begin() + static_cast<std::ptrdiff_t>(n));
   PlyVertexData data;
   data.colors = colorize(fq, 0.0, 1.0);
   std::vector<double> marker(n, 0.0);
-  const DistanceField near = dijkstra(r.graph, r.features.vertices, DijkstraOptions{0.015 * r.features.diameter});
+  const DistanceField near = geodesic_distances(r.graph, r.features.vertices, geodesic,
+                                                GeodesicOptions{0.015 * r.features.diameter});
   for (Index v = 0; v < surface.num_vertices(); ++v) {
     if (near.nearest_source[v] == kInvalidIndex) continue;
     data.colors.row(v) << 0.85, 0.1, 0.1;
@@ -107,10 +111,13 @@ int run_features(const std::vector<std::string>& args) {
        "start vertex v_r of the diameter search (index in the cleaned mesh)")
       ("all-components", po::bool_switch(&all_components),
        "process every connected component (default: the largest only)");
+  add_geodesic_option(options, feature_options.geodesic);
   po::positional_options_description positional;
   positional.add("mesh", 1);
   po::variables_map vm;
-  if (!parse(args, "reeb features MESH [-o features.json] [--ply fq.ply]", options, positional, vm)) return 0;
+  if (!parse(args, "reeb features MESH [-o features.json] [--ply fq.ply] [--geodesic dijkstra|fmm]", options, positional,
+             vm))
+    return 0;
 
   LoadedMesh loaded = load_for_command(mesh_path, all_components);
   CleanedMesh& cleaned = loaded.cleaned;
@@ -126,7 +133,7 @@ int run_features(const std::vector<std::string>& args) {
     std::cout << "wrote " << json_path << "\n";
   }
   if (!ply_path.empty()) {
-    write_fq_ply(ply_path, results.front());
+    write_fq_ply(ply_path, results.front(), feature_options.geodesic);
     std::cout << "wrote " << ply_path << (results.size() > 1 ? " (largest component)" : "") << "\n";
   }
   return 0;

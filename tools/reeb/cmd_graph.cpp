@@ -77,12 +77,13 @@ int run_graph(const std::vector<std::string>& args) {
        "relaxation radius of the extrema intersection (fraction of the geodesic diameter)")
       ("all-components", po::bool_switch(&all_components),
        "process every connected component (default: the largest only)");
+  add_geodesic_option(options, analysis.features.geodesic);
   po::positional_options_description positional;
   positional.add("mesh", 1);
   po::variables_map vm;
   if (!parse(args,
              "reeb graph MESH -o graph.json [--ply segmentation.ply] [--obj skeleton.obj] [--png figure.png] "
-             "[--epsilon E] [--all-components]",
+             "[--epsilon E] [--geodesic dijkstra|fmm] [--all-components]",
              options, positional, vm))
     return 0;
 

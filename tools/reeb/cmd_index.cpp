@@ -25,10 +25,12 @@ int run_index(const std::vector<std::string>& args) {
        "keep the entries already in the file and compute only new or changed meshes (content hash)")
       ("epsilon", po::value(&extraction.analysis.features.epsilon)->default_value(extraction.analysis.features.epsilon),
        "relaxation radius of the extrema intersection (fraction of the geodesic diameter)");
+  add_geodesic_option(options, extraction.analysis.features.geodesic);
   po::positional_options_description positional;
   positional.add("input", -1);
   po::variables_map vm;
-  if (!parse(args, "reeb index INPUT... -o collection.h5 [--classes FILE.cla] [--threads N] [--resume] [--epsilon E]",
+  if (!parse(args, "reeb index INPUT... -o collection.h5 [--classes FILE.cla] [--threads N] [--resume] [--epsilon E] "
+             "[--geodesic dijkstra|fmm]",
              options, positional, vm))
     return 0;
 

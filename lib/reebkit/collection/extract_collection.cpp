@@ -180,6 +180,7 @@ std::string analysis_options_json(const AnalysisOptions& options) {
       .field("start_vertex", static_cast<long long>(options.features.start_vertex))
       .field("max_extra_sweeps", options.features.max_extra_sweeps)
       .field("extra_seeds", options.features.extra_seeds)
+      .field("geodesic", geodesic_name(options.features.geodesic))
       .end_object();
   json.key("reeb")
       .begin_object()
