@@ -2,6 +2,7 @@
 
 #include "reebkit/core/error.h"
 #include "reebkit/matching/assignment.h"
+#include "reebkit/matching/edge_consistency.h"
 
 #include <algorithm>
 #include <cmath>
@@ -43,34 +44,13 @@ double pair_cost(double wi, double wj, double d) { return 0.5 * (wi + wj) * d; }
 /// The cost of leaving a node of weight w unmatched.
 double unmatched_node_cost(double w, const MatchingOptions& o) { return o.unmatched_cost * w; }
 
-/// e(i, j): the share of the matched neighbours of i (in a) and of j (in b)
-/// whose partners are not neighbours of j and i. `forward` maps a's nodes to
-/// b's, `backward` b's to a's (-1: unmatched).
-double edge_inconsistency(const MatchableGraph& a, const MatchableGraph& b, std::int32_t i, std::int32_t j,
-                          const std::vector<std::int32_t>& forward, const std::vector<std::int32_t>& backward) {
-  const auto ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
-  int bad = 0, total = 0;
-  for (std::int32_t k = a.neighbour_offset[ui]; k < a.neighbour_offset[ui + 1]; ++k) {
-    const std::int32_t partner = forward[static_cast<std::size_t>(a.neighbours[static_cast<std::size_t>(k)])];
-    ++total;
-    if (partner >= 0 && !b.adjacent[uj * static_cast<std::size_t>(b.num_nodes) + static_cast<std::size_t>(partner)])
-      ++bad;
-  }
-  for (std::int32_t k = b.neighbour_offset[uj]; k < b.neighbour_offset[uj + 1]; ++k) {
-    const std::int32_t partner = backward[static_cast<std::size_t>(b.neighbours[static_cast<std::size_t>(k)])];
-    ++total;
-    if (partner >= 0 && !a.adjacent[ui * static_cast<std::size_t>(a.num_nodes) + static_cast<std::size_t>(partner)])
-      ++bad;
-  }
-  return total ? static_cast<double>(bad) / total : 0.0;
-}
-
 /// Buffers reused by every match on a thread.
 struct Workspace {
   std::vector<double> dissimilarity;  // n x m
   std::vector<double> cost;           // n x m
   std::vector<std::int32_t> assignment, forward, backward, previous;
   AssignmentSolver solver;
+  EdgeInconsistencyRows edges;
 };
 
 /// The calling thread's buffers (match_graphs and match_distance_up_to).
@@ -116,14 +96,14 @@ double match_rows(const MatchableGraph& a, const MatchableGraph& b, const Matchi
   w.backward.assign(um, -1);
   const int rounds = std::max(0, o.refine_rounds);
   for (int round = 0; round <= rounds; ++round) {
+    if (round > 0) w.edges.reset(a, b, w.forward, w.backward);
     for (std::size_t i = 0; i < un; ++i) {
       const double wi = weight(a, i);
       double* row = &w.cost[i * um];
+      const double* e = round > 0 ? w.edges.row(static_cast<std::int32_t>(i)).data() : nullptr;
       for (std::size_t j = 0; j < um; ++j) {
         double d = w.dissimilarity[i * um + j];
-        if (round > 0)
-          d += o.edge_weight * edge_inconsistency(a, b, static_cast<std::int32_t>(i), static_cast<std::int32_t>(j),
-                                                  w.forward, w.backward);
+        if (round > 0) d += o.edge_weight * e[j];
         const double wj = weight(b, j);
         row[j] = pair_cost(wi, wj, d) - o.unmatched_cost * (wi + wj);
       }
