@@ -8,93 +8,43 @@
 
 namespace reebkit {
 
+double AssignmentSolver::solve(const double* cost, int rows, int cols, std::vector<std::int32_t>& assignment) {
+  if (rows < 0 || rows > cols)
+    throw InvalidArgument("solve_assignment: needs 0 <= rows <= columns, got " + std::to_string(rows) + " x " +
+                          std::to_string(cols));
+  return solve_rows<false>(cost, rows, cols, assignment);
+}
+
+double AssignmentSolver::solve_or_leave(const double* cost, int rows, int cols,
+                                        std::vector<std::int32_t>& assignment) {
+  if (rows < 0 || cols < 0)
+    throw InvalidArgument("solve_or_leave: needs rows, columns >= 0, got " + std::to_string(rows) + " x " +
+                          std::to_string(cols));
+  return solve_rows<true>(cost, rows, cols, assignment);
+}
+
 // Rows are added one at a time; each addition grows a shortest-path tree of
 // alternating paths over the reduced costs cost - u - v (Dijkstra without a
 // heap: O(cols) per step) until it reaches a free column, then augments and
 // updates the potentials so that reduced costs stay >= 0. Column 0 of the
 // internal arrays is a virtual column holding the row being added.
-double AssignmentSolver::solve(const double* cost, int rows, int cols, std::vector<std::int32_t>& assignment) {
-  if (rows < 0 || rows > cols)
-    throw InvalidArgument("solve_assignment: needs 0 <= rows <= columns, got " + std::to_string(rows) + " x " +
-                          std::to_string(cols));
-  const auto n = static_cast<std::size_t>(cols) + 1;
-  u_.assign(static_cast<std::size_t>(rows) + 1, 0.0);
-  v_.assign(n, 0.0);
-  row_of_col_.assign(n, 0);  // 1-based row of each column, 0 = free
-  way_.assign(n, 0);
-  min_slack_.resize(n);
-  used_.resize(n);
-  constexpr double kInf = std::numeric_limits<double>::infinity();
-  for (int i = 1; i <= rows; ++i) {
-    row_of_col_[0] = i;
-    std::size_t j0 = 0;
-    std::fill(min_slack_.begin(), min_slack_.end(), kInf);
-    std::fill(used_.begin(), used_.end(), char{0});
-    do {
-      used_[j0] = 1;
-      const int i0 = row_of_col_[j0];
-      const double* row = cost + static_cast<std::ptrdiff_t>(i0 - 1) * cols;
-      const double ui0 = u_[static_cast<std::size_t>(i0)];
-      double delta = kInf;
-      std::size_t j1 = 0;
-      for (std::size_t j = 1; j < n; ++j) {
-        if (used_[j]) continue;
-        const double reduced = row[j - 1] - ui0 - v_[j];
-        if (reduced < min_slack_[j]) {
-          min_slack_[j] = reduced;
-          way_[j] = static_cast<std::int32_t>(j0);
-        }
-        if (min_slack_[j] < delta) {
-          delta = min_slack_[j];
-          j1 = j;
-        }
-      }
-      for (std::size_t j = 0; j < n; ++j) {
-        if (used_[j]) {
-          u_[static_cast<std::size_t>(row_of_col_[j])] += delta;
-          v_[j] -= delta;
-        } else {
-          min_slack_[j] -= delta;
-        }
-      }
-      j0 = j1;
-    } while (row_of_col_[j0] != 0);
-    do {  // augment along the path back to the virtual column
-      const auto j1 = static_cast<std::size_t>(way_[j0]);
-      row_of_col_[j0] = row_of_col_[j1];
-      j0 = j1;
-    } while (j0 != 0);
-  }
-  assignment.assign(static_cast<std::size_t>(rows), -1);
-  double total = 0.0;
-  for (std::size_t j = 1; j < n; ++j) {
-    if (row_of_col_[j] == 0) continue;
-    const int i = row_of_col_[j] - 1;
-    assignment[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(j - 1);
-    total += cost[static_cast<std::ptrdiff_t>(i) * cols + static_cast<std::ptrdiff_t>(j - 1)];
-  }
-  return total;
-}
-
-// solve() on [cost | D] step for step. Internal columns 1..cols are the
-// given ones, cols + k the own column of row k (1-based). An own column is
-// reachable only from its row, so (1) its slack is finite only once its row
-// has been scanned in the current addition, and solve()'s forbidden entries
-// never win a minimum: only the own columns of the rows scanned so far
-// (own_, in increasing order as solve() meets them) take part; (2) an own
-// column taken by its row is never reached again (the row can only be
-// reached through that column), so own columns are never in the tree and
-// their v stays 0.
-double AssignmentSolver::solve_or_leave(const double* cost, int rows, int cols,
-                                        std::vector<std::int32_t>& assignment) {
-  if (rows < 0 || cols < 0)
-    throw InvalidArgument("solve_assignment: needs rows, columns >= 0, got " + std::to_string(rows) + " x " +
-                          std::to_string(cols));
+//
+// With own columns (solve_or_leave), solve() on [cost | D] step for step:
+// internal columns 1..cols are the given ones, cols + k the own column of
+// row k (1-based). An own column is reachable only from its row, so (1) its
+// slack is finite only once its row has been scanned in the current
+// addition, and D's forbidden entries never win a minimum: only the own
+// columns of the rows scanned so far (own_, in increasing order as solve()
+// meets them) take part; (2) an own column taken by its row is never
+// reached again (the row can only be reached through that column), so own
+// columns are never in the tree and their v stays 0.
+template <bool kOwnColumns>
+double AssignmentSolver::solve_rows(const double* cost, int rows, int cols, std::vector<std::int32_t>& assignment) {
   const auto n = static_cast<std::size_t>(cols) + 1;  // the given columns and the virtual one
-  const std::size_t all = n + static_cast<std::size_t>(rows);
+  const std::size_t all = n + (kOwnColumns ? static_cast<std::size_t>(rows) : 0);
   u_.assign(static_cast<std::size_t>(rows) + 1, 0.0);
   v_.assign(n, 0.0);
-  row_of_col_.assign(all, 0);
+  row_of_col_.assign(all, 0);  // 1-based row of each column, 0 = free
   way_.assign(all, 0);
   min_slack_.resize(all);
   used_.resize(n);
@@ -104,7 +54,7 @@ double AssignmentSolver::solve_or_leave(const double* cost, int rows, int cols,
     std::size_t j0 = 0;
     std::fill(min_slack_.begin(), min_slack_.begin() + static_cast<std::ptrdiff_t>(n), kInf);
     std::fill(used_.begin(), used_.end(), char{0});
-    own_.clear();
+    if constexpr (kOwnColumns) own_.clear();
     do {
       used_[j0] = 1;
       const int i0 = row_of_col_[j0];
@@ -124,17 +74,19 @@ double AssignmentSolver::solve_or_leave(const double* cost, int rows, int cols,
           j1 = j;
         }
       }
-      const auto mine = static_cast<std::int32_t>(n) + i0 - 1;  // i0's own column
-      own_.insert(std::upper_bound(own_.begin(), own_.end(), mine), mine);
-      for (const std::int32_t j : own_) {
-        const auto uj = static_cast<std::size_t>(j);
-        if (j == mine) {
-          min_slack_[uj] = 0.0 - ui0;  // its cost 0, its v 0
-          way_[uj] = static_cast<std::int32_t>(j0);
-        }
-        if (min_slack_[uj] < delta) {
-          delta = min_slack_[uj];
-          j1 = uj;
+      if constexpr (kOwnColumns) {
+        const auto mine = static_cast<std::int32_t>(n) + i0 - 1;  // i0's own column
+        own_.insert(std::upper_bound(own_.begin(), own_.end(), mine), mine);
+        for (const std::int32_t j : own_) {
+          const auto uj = static_cast<std::size_t>(j);
+          if (j == mine) {
+            min_slack_[uj] = 0.0 - ui0;  // its cost 0, its v 0
+            way_[uj] = static_cast<std::int32_t>(j0);
+          }
+          if (min_slack_[uj] < delta) {
+            delta = min_slack_[uj];
+            j1 = uj;
+          }
         }
       }
       for (std::size_t j = 0; j < n; ++j) {
@@ -145,7 +97,8 @@ double AssignmentSolver::solve_or_leave(const double* cost, int rows, int cols,
           min_slack_[j] -= delta;
         }
       }
-      for (const std::int32_t j : own_) min_slack_[static_cast<std::size_t>(j)] -= delta;
+      if constexpr (kOwnColumns)
+        for (const std::int32_t j : own_) min_slack_[static_cast<std::size_t>(j)] -= delta;
       j0 = j1;
     } while (row_of_col_[j0] != 0);
     do {  // augment along the path back to the virtual column
@@ -154,7 +107,7 @@ double AssignmentSolver::solve_or_leave(const double* cost, int rows, int cols,
       j0 = j1;
     } while (j0 != 0);
   }
-  assignment.assign(static_cast<std::size_t>(rows), -1);
+  assignment.assign(static_cast<std::size_t>(rows), -1);  // -1: a row on its own column
   double total = 0.0;
   for (std::size_t j = 1; j < n; ++j) {
     if (row_of_col_[j] == 0) continue;
