@@ -3,7 +3,8 @@
 // compared through their bit patterns (monotone for x >= 0). A push is O(1);
 // an entry moves down at most 64 buckets over its life, so a run costs
 // O(pushes + 64 n) instead of a binary heap's O(pushes log n), and each bucket
-// is a vector filled and drained sequentially, which caches well.
+// is a vector filled and drained sequentially, which caches well. A bit mask
+// of the non-empty buckets finds the next one to refill from in one step.
 // (Ahuja, Mehlhorn, Orlin, Tarjan, "Faster algorithms for the shortest path
 // problem", J. ACM 1990.)
 #pragma once
@@ -27,12 +28,13 @@ class RadixHeap {
     for (auto& bucket : buckets_) bucket.clear();
     last_ = 0;
     size_ = 0;
+    nonempty_ = 0;
   }
 
   /// \pre key >= 0, finite, and >= the key of the last pop.
   void push(double key, Index value) {
     const std::uint64_t k = bits(key);
-    buckets_[bucket_of(k)].push_back({k, value});
+    put({k, value});
     ++size_;
   }
 
@@ -42,13 +44,13 @@ class RadixHeap {
     if (buckets_[0].empty()) {
       // Refill bucket 0 from the first non-empty bucket: its smallest key
       // becomes the reference, and every entry of the bucket moves lower.
-      std::size_t i = 1;
-      while (buckets_[i].empty()) ++i;
+      const std::size_t i = nonempty_ ? static_cast<std::size_t>(__builtin_ctzll(nonempty_)) : 64;
       std::vector<Entry>& source = buckets_[i];
       std::uint64_t smallest = source.front().key;
       for (const Entry& e : source) smallest = std::min(smallest, e.key);
       last_ = smallest;
-      for (const Entry& e : source) buckets_[bucket_of(e.key)].push_back(e);
+      nonempty_ &= ~bit(i);
+      for (const Entry& e : source) put(e);  // into buckets below i
       source.clear();
     }
     const Entry e = buckets_[0].back();
@@ -65,6 +67,17 @@ class RadixHeap {
     Index value;
   };
 
+  // Buckets 1-63 have a bit in nonempty_; bucket 64 (keys differing in the
+  // sign bit) cannot be used by non-negative keys, and bucket 0 is checked
+  // directly.
+  static std::uint64_t bit(std::size_t bucket) { return bucket < 64 ? std::uint64_t{1} << bucket : 0; }
+
+  void put(const Entry& e) {
+    const std::size_t b = bucket_of(e.key);
+    buckets_[b].push_back(e);
+    if (b > 0) nonempty_ |= bit(b);
+  }
+
   static std::uint64_t bits(double key) {
     std::uint64_t k;
     std::memcpy(&k, &key, sizeof k);
@@ -80,6 +93,7 @@ class RadixHeap {
   std::array<std::vector<Entry>, 65> buckets_;
   std::uint64_t last_ = 0;  // the key of the last refill of bucket 0
   std::size_t size_ = 0;
+  std::uint64_t nonempty_ = 0;  // bit i: bucket i (1-63) holds entries
 };
 
 }  // namespace reebkit
