@@ -2,7 +2,6 @@
 
 #include <Eigen/Core>
 
-#include <array>
 #include <cmath>
 #include <utility>
 
@@ -27,13 +26,19 @@ constexpr double kSplitCosine = -0.01;
 // (entries e1^2, p = P.Q, e2^2). The wave comes from inside the triangle when
 // -g = alpha P + beta Q with alpha, beta >= 0, i.e. G^-1 (t 1 - A) >= 0.
 // Values are shifted by a, so that large distances cost no precision.
-// Returns false when the update is not causal; else sets t and whether the
-// wave crosses the side vu nearer v (alpha >= beta).
-bool triangle_update(double a, double b, double e1, double e2, double e3, double& t, bool& nearer_v) {
+// Returns false when the update is not causal or cannot go below `best`;
+// else sets t and whether the wave crosses the side vu nearer v (alpha >=
+// beta).
+inline bool triangle_update(double a, double b, double e1, double e2, double e3, double best, double& t,
+                            bool& nearer_v) {
   const double e1s = e1 * e1, e2s = e2 * e2, e3s = e3 * e3;
   const double p = 0.5 * (e1s + e2s - e3s);
   const double det = e1s * e2s - p * p;  // |P x Q|^2: (2 area)^2
   if (!(det > 1e-12 * e1s * e2s)) return false;  // degenerate, or the link length is missing (NaN)
+  // A causal wave crosses the side vu, where T >= min(a, b), and then
+  // travels at least the height of w over vu: t >= min(a, b) + sqrt(det) / e3.
+  const double gap = best - std::min(a, b);
+  if (gap <= 0.0 || gap * gap * e3s <= det) return false;
   const double delta = b - a;
   // det (A - t 1)' G^-1 (A - t 1) = det with A = (0, delta):
   // e3^2 t^2 - 2 delta (e1^2 - p) t + e1^2 delta^2 - det = 0; the larger root.
@@ -186,27 +191,28 @@ const DistanceField& FastMarchingSolver::run(const std::vector<Index>& sources, 
     if (alive[v] || d > dist[v]) continue;  // stale entry
     alive[v] = 1;
     settle(v, d);
-    for (Index i = offset[v]; i < offset[v + 1]; ++i) {
+    const Index first = offset[v], last = offset[v + 1] - 1;
+    for (Index i = first; i <= last; ++i) {
       const Index w = neighbor[i];
       if (alive[w] || (labels && labels[w] != options.label)) continue;
-      double best = d + length[i];
-      Index source = nearest[v];
+      double best = std::min(d + length[i], dist[w]);
+      Index source = best < dist[w] ? nearest[v] : kInvalidIndex;
       // The triangles (v, w, u) on either side of the edge vw, u settled.
       // Settled vertices carry the label, so the restriction holds as is.
-      const auto [prev, next] = ring_slots(graph_, v, i);
-      const std::array<std::pair<Index, Index>, 2> sides = {{{prev, prev}, {next, i}}};  // (slot of u, link slot)
+      const Index prev = i > first ? i - 1 : last, next = i < last ? i + 1 : first;
+      const Index sides[2][2] = {{prev, prev}, {next, i}};  // (slot of u, link slot)
       for (const auto& [j, link] : sides) {
         if (!link_next[link]) continue;
         const Index u = neighbor[j];
         if (!alive[u]) continue;
         double t;
         bool nearer_v;
-        if (triangle_update(d, dist[u], length[i], link_length[link], length[j], t, nearer_v) && t < best) {
+        if (triangle_update(d, dist[u], length[i], link_length[link], length[j], best, t, nearer_v) && t < best) {
           best = t;
           source = nearer_v ? nearest[v] : nearest[u];
         }
       }
-      if (best < dist[w] && best <= options.radius) improve(w, best, source);
+      if (source != kInvalidIndex && best <= options.radius) improve(w, best, source);
     }
     for (Index k = virtual_offset_[static_cast<std::size_t>(v)]; k < virtual_offset_[static_cast<std::size_t>(v) + 1];
          ++k) {
@@ -218,8 +224,8 @@ const DistanceField& FastMarchingSolver::run(const std::vector<Index>& sources, 
         continue;
       double t;
       bool nearer_v;
-      if (triangle_update(d, dist[u], vt.to_target, vt.other_to_target, vt.to_other, t, nearer_v) && t < dist[w] &&
-          t <= options.radius)
+      if (triangle_update(d, dist[u], vt.to_target, vt.other_to_target, vt.to_other, dist[w], t, nearer_v) &&
+          t < dist[w] && t <= options.radius)
         improve(w, t, nearer_v ? nearest[v] : nearest[u]);
     }
   }
