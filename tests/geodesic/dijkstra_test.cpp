@@ -85,41 +85,6 @@ TEST(Dijkstra, MultiSourceIsTheMinimumOverSingleSources) {
   }
 }
 
-TEST(Dijkstra, RadiusBoundStopsTheSearchWithoutChangingDistances) {
-  const MeshGraph g = build_mesh_graph(make_icosphere(3));
-  const DistanceField full = dijkstra(g, 5);
-  const double radius = 0.6;
-  const DistanceField near = dijkstra(g, 5, DijkstraOptions{radius});
-  Index inside = 0;
-  for (Index v = 0; v < g.num_vertices(); ++v) {
-    if (full.distance[v] <= radius) {
-      ++inside;
-      EXPECT_DOUBLE_EQ(near.distance[v], full.distance[v]);
-    } else {
-      EXPECT_EQ(near.distance[v], kInf);
-      EXPECT_EQ(near.nearest_source[v], kInvalidIndex);
-    }
-  }
-  EXPECT_EQ(near.reached, inside);
-  EXPECT_GT(inside, 1);
-  EXPECT_LT(inside, g.num_vertices());
-}
-
-TEST(DijkstraSolver, ReuseGivesTheSameFieldsAsFreshRuns) {
-  const MeshGraph g = build_mesh_graph(make_torus(24, 10));
-  DijkstraSolver solver(g);
-  const std::vector<std::pair<std::vector<Index>, double>> runs = {
-      {{0}, kInf}, {{17, 90}, 0.3}, {{50}, kInf}, {{2}, 0.1}, {{200, 3}, kInf}};
-  for (const auto& [sources, radius] : runs) {
-    const DistanceField expected = dijkstra(g, sources, DijkstraOptions{radius});
-    const DistanceField& got = solver.run(sources, DijkstraOptions{radius});
-    EXPECT_EQ(got.distance, expected.distance);
-    EXPECT_EQ(got.nearest_source, expected.nearest_source);
-    EXPECT_EQ(got.farthest, expected.farthest);
-    EXPECT_EQ(static_cast<Index>(solver.settled().size()), expected.reached);
-  }
-}
-
 // A search restricted to one label equals the search on the graph whose
 // edges into other labels are cut (infinite length): labels here cut a torus
 // into bands so that paths inside one band must go the long way round.
@@ -146,17 +111,6 @@ TEST(Dijkstra, LabelsRestrictTheSearchToOneRegion) {
     }
     EXPECT_EQ(f.reached, inside);
   }
-  options.label = 2;
-  EXPECT_THROW(solver.run({0}, options), InvalidArgument);  // vertex 0 has label 1
-  const std::vector<Index> too_few(3, 1);
-  options.labels = &too_few;
-  EXPECT_THROW(solver.run({0}, options), InvalidArgument);
-}
-
-TEST(Dijkstra, RejectsSourcesOutOfRange) {
-  const MeshGraph g = build_mesh_graph(make_cube());
-  EXPECT_THROW(dijkstra(g, 8), InvalidArgument);
-  EXPECT_THROW(dijkstra(g, -1), InvalidArgument);
 }
 
 }  // namespace

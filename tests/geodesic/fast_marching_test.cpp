@@ -240,53 +240,6 @@ TEST(FastMarching, InvariantUnderRotationTranslationAndScale) {
   EXPECT_EQ(twice.farthest, reference.farthest);
 }
 
-TEST(FastMarching, RadiusBoundStopsTheSearchWithoutChangingDistances) {
-  const MeshGraph g = build_mesh_graph(make_icosphere(3));
-  const DistanceField full = fast_marching(g, 5);
-  const double radius = 0.6;
-  const DistanceField near = fast_marching(g, 5, GeodesicOptions{radius});
-  Index inside = 0;
-  for (Index v = 0; v < g.num_vertices(); ++v) {
-    if (full.distance[v] <= radius) {
-      ++inside;
-      EXPECT_EQ(near.distance[v], full.distance[v]);
-    } else {
-      EXPECT_EQ(near.distance[v], kInf);
-      EXPECT_EQ(near.nearest_source[v], kInvalidIndex);
-    }
-  }
-  EXPECT_EQ(near.reached, inside);
-  EXPECT_GT(inside, 1);
-  EXPECT_LT(inside, g.num_vertices());
-}
-
-TEST(FastMarchingSolver, ReuseGivesTheSameFieldsAsFreshRuns) {
-  const MeshGraph g = build_mesh_graph(resample_mesh(make_torus(24, 10)));
-  FastMarchingSolver solver(g);
-  const std::vector<std::pair<std::vector<Index>, double>> runs = {
-      {{0}, kInf}, {{17, 90}, 0.3}, {{50}, kInf}, {{2}, 0.1}, {{200, 3}, kInf}};
-  for (const auto& [sources, radius] : runs) {
-    const DistanceField expected = fast_marching(g, sources, GeodesicOptions{radius});
-    const DistanceField& got = solver.run(sources, GeodesicOptions{radius});
-    EXPECT_EQ(got.distance, expected.distance);
-    EXPECT_EQ(got.nearest_source, expected.nearest_source);
-    EXPECT_EQ(got.farthest, expected.farthest);
-    EXPECT_EQ(got.max_distance, expected.max_distance);
-    EXPECT_EQ(static_cast<Index>(solver.settled().size()), expected.reached);
-  }
-  solver.release();
-  EXPECT_EQ(solver.run({0}).distance, fast_marching(g, 0).distance);
-}
-
-// farthest is the reached vertex of largest (distance, id), as for Dijkstra.
-TEST(FastMarching, FarthestIsTheLargestDistanceTiesToTheLargestId) {
-  const MeshGraph g = build_mesh_graph(make_grid(6, 6, 1.0));
-  const DistanceField f = fast_marching(g, {0, 48});  // opposite corners: the other two corners tie
-  EXPECT_EQ(f.distance[6], f.distance[42]);
-  EXPECT_EQ(f.farthest, 42);
-  EXPECT_EQ(f.max_distance, f.distance[42]);
-}
-
 // A label restriction keeps the front inside the region: vertices of other
 // labels stay unreached, distances can only grow, and one label covering
 // everything changes nothing.
@@ -317,28 +270,6 @@ TEST(FastMarching, LabelsRestrictTheSearchToOneRegion) {
   options.labels = &one;
   options.label = 4;
   EXPECT_EQ(solver.run({9}, options).distance, fast_marching(g, 9).distance);
-  options.label = 2;
-  EXPECT_THROW(solver.run({0}, options), InvalidArgument);  // vertex 0 has label 4
-  const std::vector<Index> too_few(3, 1);
-  options.labels = &too_few;
-  EXPECT_THROW(solver.run({0}, options), InvalidArgument);
-}
-
-TEST(FastMarching, RejectsSourcesOutOfRange) {
-  const MeshGraph g = build_mesh_graph(make_cube());
-  EXPECT_THROW(fast_marching(g, 8), InvalidArgument);
-  EXPECT_THROW(fast_marching(g, -1), InvalidArgument);
-}
-
-TEST(GeodesicSolver, MethodsByNameAndThroughTheFactory) {
-  EXPECT_EQ(parse_geodesic("dijkstra"), Geodesic::Dijkstra);
-  EXPECT_EQ(parse_geodesic("fmm"), Geodesic::FastMarching);
-  EXPECT_STREQ(geodesic_name(Geodesic::FastMarching), "fmm");
-  EXPECT_THROW(parse_geodesic("heat"), InvalidArgument);
-  const MeshGraph g = build_mesh_graph(make_torus(20, 8));
-  EXPECT_EQ(geodesic_distances(g, {3, 40}, Geodesic::Dijkstra).distance, dijkstra(g, {3, 40}).distance);
-  EXPECT_EQ(geodesic_distances(g, {3, 40}, Geodesic::FastMarching).distance, fast_marching(g, {3, 40}).distance);
-  EXPECT_EQ(make_geodesic_solver(g, Geodesic::FastMarching)->run({7}).distance, fast_marching(g, 7).distance);
 }
 
 }  // namespace

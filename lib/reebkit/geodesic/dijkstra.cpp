@@ -3,13 +3,7 @@
 namespace reebkit {
 
 const DistanceField& DijkstraSolver::run(const std::vector<Index>& sources, const DijkstraOptions& options) {
-  start(sources, options, "dijkstra");
-  const Index* labels = options.labels ? options.labels->data() : nullptr;
-  const double* dist = field_.distance.data();
-  const Index* nearest = field_.nearest_source.data();
-  const Index* offset = graph_.offset.data();
-  const Index* neighbor = graph_.neighbor.data();
-  const double* length = graph_.length.data();
+  const auto [labels, dist, nearest, offset, neighbor, length] = start(sources, options, "dijkstra");
   while (!heap_.empty()) {
     const auto [d, v] = heap_.pop();
     if (d > dist[v]) continue;  // stale entry
@@ -25,13 +19,11 @@ const DistanceField& DijkstraSolver::run(const std::vector<Index>& sources, cons
 }
 
 DistanceField dijkstra(const MeshGraph& graph, const std::vector<Index>& sources, const DijkstraOptions& options) {
-  DijkstraSolver solver(graph);
-  solver.run(sources, options);
-  return solver.release();
+  return run_once<DijkstraSolver>(graph, sources, options);
 }
 
 DistanceField dijkstra(const MeshGraph& graph, Index source, const DijkstraOptions& options) {
-  return dijkstra(graph, std::vector<Index>{source}, options);
+  return run_once<DijkstraSolver>(graph, {source}, options);
 }
 
 }  // namespace reebkit

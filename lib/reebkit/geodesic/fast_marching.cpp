@@ -176,13 +176,7 @@ FastMarchingSolver::FastMarchingSolver(const MeshGraph& graph)
 
 const DistanceField& FastMarchingSolver::run(const std::vector<Index>& sources, const GeodesicOptions& options) {
   for (const Index v : settled_) alive_[static_cast<std::size_t>(v)] = 0;
-  start(sources, options, "fast_marching");
-  const Index* labels = options.labels ? options.labels->data() : nullptr;
-  const double* dist = field_.distance.data();
-  const Index* nearest = field_.nearest_source.data();
-  const Index* offset = graph_.offset.data();
-  const Index* neighbor = graph_.neighbor.data();
-  const double* length = graph_.length.data();
+  const auto [labels, dist, nearest, offset, neighbor, length] = start(sources, options, "fast_marching");
   const std::uint8_t* link_next = graph_.link_next.data();
   const double* link_length = link_length_.data();
   std::uint8_t* alive = alive_.data();
@@ -230,16 +224,6 @@ const DistanceField& FastMarchingSolver::run(const std::vector<Index>& sources, 
     }
   }
   return finish();
-}
-
-DistanceField fast_marching(const MeshGraph& graph, const std::vector<Index>& sources, const GeodesicOptions& options) {
-  FastMarchingSolver solver(graph);
-  solver.run(sources, options);
-  return solver.release();
-}
-
-DistanceField fast_marching(const MeshGraph& graph, Index source, const GeodesicOptions& options) {
-  return fast_marching(graph, std::vector<Index>{source}, options);
 }
 
 }  // namespace reebkit

@@ -14,43 +14,9 @@
 
 namespace reebkit {
 
-/// Fast-marching distances from the nearest of `sources` (vertex ids) to
-/// every vertex. Intrinsic: only the edge lengths and the triangles of the
-/// graph's one-rings are used, so the result depends on the surface's metric,
-/// not on its placement in space.
-///
-/// Vertex w, when a neighbour v is settled, takes the smallest of the edge
-/// update T(v) + |vw| (Dijkstra's) and, for each triangle (w, v, u) whose
-/// corner u is settled too, the Kimmel-Sethian update: the value at w of the
-/// plane wave T(x) = t + g.x with |g| = 1 through T(v) and T(u), used only
-/// when it is causal (the wave reaches w from inside the triangle, -g within
-/// the angle at w, and t >= T(v), T(u)). An obtuse angle at w can hide the
-/// wave's direction from every triangle with two settled corners, so each
-/// obtuse corner (above 90.6 degrees) is split as Kimmel and Sethian do: the triangles beyond the
-/// opposite side are unfolded into the plane of (w, v, u) until one brings a
-/// vertex y into the section of directions at right angles or less to both
-/// wv and wu; the virtual triangles (w, v, y) and (w, y, u), acute at w, then
-/// update w as real ones do when their corners are settled. A corner whose
-/// unfolding meets a boundary, or needs more than kMaxUnfoldings triangles,
-/// keeps only its real triangle; degenerate triangles give edge updates only.
-///
-/// Distances never exceed Dijkstra's on the same graph (edge updates are
-/// always candidates) and converge to the surface's geodesic distance as
-/// the edge length h goes to 0 (error about O(h), largest near the sources,
-/// where the planar wave approximates a circular front). nearest_source is
-/// the source of the corner nearer to where the wave crosses the triangle.
-/// With labels, a virtual triangle is used only when its whole unfolded
-/// strip is one triangle whose corners carry the label. Deterministic;
-/// O(E + 64 V) per run, as Dijkstra, after a precomputation in O(E * degree).
-DistanceField fast_marching(const MeshGraph& graph, const std::vector<Index>& sources,
-                            const GeodesicOptions& options = {});
-
-/// Single-source convenience overload.
-DistanceField fast_marching(const MeshGraph& graph, Index source, const GeodesicOptions& options = {});
-
-/// The same, for many runs on one graph (see GeodesicSolver): the triangles'
-/// third sides and the splits of the obtuse corners are computed once, in
-/// the constructor.
+/// Fast marching for many runs on one graph (see GeodesicSolver and
+/// fast_marching below): the triangles' third sides and the splits of the
+/// obtuse corners are computed once, in the constructor.
 class FastMarchingSolver final : public GeodesicSolver {
  public:
   /// Most triangles unfolded to split one obtuse corner.
@@ -89,5 +55,43 @@ class FastMarchingSolver final : public GeodesicSolver {
   std::vector<VirtualTriangle> virtual_;
   std::vector<std::uint8_t> alive_;  // settled in the current run
 };
+
+/// Fast-marching distances from the nearest of `sources` (vertex ids) to
+/// every vertex. Intrinsic: only the edge lengths and the triangles of the
+/// graph's one-rings are used, so the result depends on the surface's metric,
+/// not on its placement in space.
+///
+/// Vertex w, when a neighbour v is settled, takes the smallest of the edge
+/// update T(v) + |vw| (Dijkstra's) and, for each triangle (w, v, u) whose
+/// corner u is settled too, the Kimmel-Sethian update: the value at w of the
+/// plane wave T(x) = t + g.x with |g| = 1 through T(v) and T(u), used only
+/// when it is causal (the wave reaches w from inside the triangle, -g within
+/// the angle at w, and t >= T(v), T(u)). An obtuse angle at w can hide the
+/// wave's direction from every triangle with two settled corners, so each
+/// obtuse corner (above 90.6 degrees) is split as Kimmel and Sethian do: the
+/// triangles beyond the opposite side are unfolded into the plane of
+/// (w, v, u) until one brings a vertex y into the section of directions at
+/// right angles or less to both wv and wu; the virtual triangles (w, v, y) and (w, y, u), acute at w, then
+/// update w as real ones do when their corners are settled. A corner whose
+/// unfolding meets a boundary, or needs more than kMaxUnfoldings triangles,
+/// keeps only its real triangle; degenerate triangles give edge updates only.
+///
+/// Distances never exceed Dijkstra's on the same graph (edge updates are
+/// always candidates) and converge to the surface's geodesic distance as
+/// the edge length h goes to 0 (error about O(h), largest near the sources,
+/// where the planar wave approximates a circular front). nearest_source is
+/// the source of the corner nearer to where the wave crosses the triangle.
+/// With labels, a virtual triangle is used only when its whole unfolded
+/// strip is one triangle whose corners carry the label. Deterministic;
+/// O(E + 64 V) per run, as Dijkstra, after a precomputation in O(E * degree).
+inline DistanceField fast_marching(const MeshGraph& graph, const std::vector<Index>& sources,
+                                   const GeodesicOptions& options = {}) {
+  return run_once<FastMarchingSolver>(graph, sources, options);
+}
+
+/// Single-source convenience overload.
+inline DistanceField fast_marching(const MeshGraph& graph, Index source, const GeodesicOptions& options = {}) {
+  return run_once<FastMarchingSolver>(graph, {source}, options);
+}
 
 }  // namespace reebkit

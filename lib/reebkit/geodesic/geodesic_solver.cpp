@@ -26,7 +26,8 @@ GeodesicSolver::GeodesicSolver(const MeshGraph& graph) : graph_(graph) {
   field_.nearest_source.assign(n, kInvalidIndex);
 }
 
-void GeodesicSolver::start(const std::vector<Index>& sources, const GeodesicOptions& options, const char* who) {
+GeodesicSolver::RunArrays GeodesicSolver::start(const std::vector<Index>& sources, const GeodesicOptions& options,
+                                                const char* who) {
   const Index n = graph_.num_vertices();
   if (field_.distance.size() != static_cast<std::size_t>(n)) {  // released before
     field_.distance.assign(static_cast<std::size_t>(n), std::numeric_limits<double>::infinity());
@@ -60,6 +61,8 @@ void GeodesicSolver::start(const std::vector<Index>& sources, const GeodesicOpti
     if (field_.nearest_source[static_cast<std::size_t>(v)] != kInvalidIndex) continue;  // listed twice
     improve(v, 0.0, static_cast<Index>(s));
   }
+  return {labels,           field_.distance.data(), field_.nearest_source.data(), graph_.offset.data(),
+          graph_.neighbor.data(), graph_.length.data()};
 }
 
 DistanceField GeodesicSolver::release() {

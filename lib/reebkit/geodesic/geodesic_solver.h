@@ -77,10 +77,21 @@ class GeodesicSolver {
   DistanceField release();
 
  protected:
+  /// The arrays a run reads in its loop, as plain pointers (no aliasing
+  /// with the vectors' bookkeeping): labels is nullptr when unrestricted.
+  struct RunArrays {
+    const Index* labels;
+    const double* dist;
+    const Index* nearest;
+    const Index* offset;
+    const Index* neighbor;
+    const double* length;
+  };
+
   /// Resets what the previous run reached, checks the options and the
   /// sources (`who` names the method in error messages) and puts every
   /// source at distance 0 on the heap.
-  void start(const std::vector<Index>& sources, const GeodesicOptions& options, const char* who);
+  RunArrays start(const std::vector<Index>& sources, const GeodesicOptions& options, const char* who);
 
   /// Records `v` settled at distance `d`: the settled list, and the farthest
   /// vertex by (distance, id), as sos_less orders vertices.
@@ -116,6 +127,15 @@ class GeodesicSolver {
  private:
   std::vector<Index> touched_;  // vertices whose distance is finite
 };
+
+/// One run of a solver of type Solver (DijkstraSolver, FastMarchingSolver):
+/// the one-shot functions dijkstra() and fast_marching().
+template <class Solver>
+DistanceField run_once(const MeshGraph& graph, const std::vector<Index>& sources, const GeodesicOptions& options) {
+  Solver solver(graph);
+  solver.run(sources, options);
+  return solver.release();
+}
 
 /// A solver of the given method for `graph` (which must outlive it).
 std::unique_ptr<GeodesicSolver> make_geodesic_solver(const MeshGraph& graph, Geodesic method);
