@@ -55,8 +55,10 @@ double AssignmentSolver::solve_rows(const double* cost, int rows, int cols, std:
     std::fill(min_slack_.begin(), min_slack_.begin() + static_cast<std::ptrdiff_t>(n), kInf);
     std::fill(used_.begin(), used_.end(), char{0});
     if constexpr (kOwnColumns) own_.clear();
+    tree_.clear();
     do {
       used_[j0] = 1;
+      tree_.push_back(static_cast<std::int32_t>(j0));
       const int i0 = row_of_col_[j0];
       const double* row = cost + static_cast<std::ptrdiff_t>(i0 - 1) * cols;
       const double ui0 = u_[static_cast<std::size_t>(i0)];
@@ -89,16 +91,18 @@ double AssignmentSolver::solve_rows(const double* cost, int rows, int cols, std:
           }
         }
       }
-      for (std::size_t j = 0; j < n; ++j) {
-        if (used_[j]) {
-          u_[static_cast<std::size_t>(row_of_col_[j])] += delta;
-          v_[j] -= delta;
-        } else {
-          min_slack_[j] -= delta;
-        }
+      for (const std::int32_t j : tree_) {
+        u_[static_cast<std::size_t>(row_of_col_[static_cast<std::size_t>(j)])] += delta;
+        v_[static_cast<std::size_t>(j)] -= delta;
       }
-      if constexpr (kOwnColumns)
-        for (const std::int32_t j : own_) min_slack_[static_cast<std::size_t>(j)] -= delta;
+      // When j1 is free the addition ends here and the slacks are not read
+      // again (reset by the next): only the potentials need the update.
+      if (row_of_col_[j1] != 0) {
+        for (std::size_t j = 0; j < n; ++j)
+          if (!used_[j]) min_slack_[j] -= delta;
+        if constexpr (kOwnColumns)
+          for (const std::int32_t j : own_) min_slack_[static_cast<std::size_t>(j)] -= delta;
+      }
       j0 = j1;
     } while (row_of_col_[j0] != 0);
     do {  // augment along the path back to the virtual column

@@ -40,7 +40,7 @@ class AssignmentSolver {
   double solve_rows(const double* cost, int rows, int cols, std::vector<std::int32_t>& assignment);
 
   std::vector<double> u_, v_, min_slack_;
-  std::vector<std::int32_t> row_of_col_, way_, own_;
+  std::vector<std::int32_t> row_of_col_, way_, own_, tree_;
   std::vector<char> used_;
 };
 
