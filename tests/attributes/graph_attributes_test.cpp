@@ -240,6 +240,10 @@ TEST(GraphAttributes, CapsuleLevelLinesAndBordersAreTheTubeRings) {
   for (Index n = 1; n < 3; ++n) {
     ASSERT_EQ(a.reeb.nodes[static_cast<std::size_t>(n)].end, NodeType::Termination);
     EXPECT_NEAR(node_value(g, n, kNodeMeanRadius) * unit, ring / (2 * kPi), 0.01 * ring / (2 * kPi)) << "leaf " << n;
+    // The profile's 8 levels all lie on the tube (the cap is 1/31 of the leaf).
+    for (int k = 0; k < kRadiusProfileLevels; ++k)
+      EXPECT_NEAR(node_value(g, n, NodeAttribute(kNodeRadiusProfile + k)) * unit, ring / (2 * kPi), 0.01 * ring / (2 * kPi))
+          << "leaf " << n << " level " << k;
     // From the root's ring to the pole, half the pole-to-pole diameter up to a ring spacing.
     EXPECT_NEAR(node_value(g, n, kNodeGeodesicExtent), 0.5, 0.01) << "leaf " << n;
     EXPECT_NEAR(node_value(g, n, kNodeRelativeArea), 0.5, 0.01) << "leaf " << n;
@@ -275,6 +279,40 @@ double max_relative_difference(const std::vector<double>& a, const std::vector<d
 // The pipeline gives the identical graph on a moved, turned and rescaled copy
 // (analyze_mesh_test), so every attribute must come out the same up to
 // rounding.
+// The radius profile is what mean_radius averages; each shape histogram is a
+// distribution (sums to 1) for a region with area.
+TEST(GraphAttributes, ProfilesAverageToTheMeanRadiusAndHistogramsSumToOne) {
+  for (const Case& c : cases()) {
+    SCOPED_TRACE(c.name);
+    const GraphAttributes g = compute_attributes(c.analysis);
+    for (Index n = 0; n < c.analysis.reeb.num_nodes(); ++n) {
+      double profile = 0.0, shape = 0.0;
+      for (int k = 0; k < kRadiusProfileLevels; ++k) profile += node_value(g, n, NodeAttribute(kNodeRadiusProfile + k));
+      for (int k = 0; k < kShapeBins; ++k) {
+        EXPECT_GE(node_value(g, n, NodeAttribute(kNodeShapeHistogram + k)), 0.0);
+        shape += node_value(g, n, NodeAttribute(kNodeShapeHistogram + k));
+      }
+      EXPECT_NEAR(profile / kRadiusProfileLevels, node_value(g, n, kNodeMeanRadius), 1e-12) << "node " << n;
+      EXPECT_NEAR(shape, node_value(g, n, kNodeRelativeArea) > 0.0 ? 1.0 : 0.0, 1e-12) << "node " << n;
+    }
+    double global = 0.0;
+    for (int k = kSigGlobalShape; k < kSignatureLength; ++k) global += g.signature[static_cast<std::size_t>(k)];
+    EXPECT_NEAR(global, 1.0, 1e-12);
+  }
+}
+
+// The mean distance between two random points of a sphere of radius R is
+// 4R/3, i.e. (4/3) / sqrt(4 pi) of sqrt(area): the mean of the global D2
+// histogram (bins of 0.15 centred at 0.075 + 0.15 k; the linear split between
+// bin centres keeps the mean of distances below the last centre exact) must
+// be that, up to sampling (512 points) and the chords of the icosphere.
+TEST(GraphAttributes, GlobalShapeDistributionOfASphereHasTheAnalyticMean) {
+  const GraphAttributes g = compute_attributes(analyze_mesh(make_icosphere(4)));
+  double mean = 0.0;
+  for (int k = 0; k < kGlobalShapeBins; ++k) mean += g.signature[static_cast<std::size_t>(kSigGlobalShape + k)] * 0.15 * (k + 0.5);
+  EXPECT_NEAR(mean, 4.0 / 3.0 / std::sqrt(4.0 * kPi), 0.015);
+}
+
 TEST(GraphAttributes, InvariantToSimilarityTransforms) {
   for (const std::size_t k : {std::size_t{0}, std::size_t{4}}) {  // star, bunny
     const MeshAnalysis& a = cases()[k].analysis;

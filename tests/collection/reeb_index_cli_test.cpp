@@ -2,6 +2,7 @@
 // `reeb info` reports it and `reeb export` prints a graph as `reeb graph` does.
 #include "io/io_test_util.h"
 #include "reebkit/collection/mesh_inputs.h"
+#include "reebkit/store/collection_file.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>
@@ -47,7 +48,7 @@ TEST(ReebIndexCli, IndexInfoExportOnTheEmbeddedCollection) {
   EXPECT_NE(info.find(std::to_string(meshes) + " meshes: " + std::to_string(meshes) + " ok, 0 failed"),
             std::string::npos)
       << info;
-  EXPECT_NE(info.find("layout 1"), std::string::npos) << info;
+  EXPECT_NE(info.find("layout " + std::to_string(kCollectionLayoutVersion)), std::string::npos) << info;
   EXPECT_NE(info.find("command: reeb index"), std::string::npos) << info;
 
   // The same document from the collection and from the mesh (timings and path aside).

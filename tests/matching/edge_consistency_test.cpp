@@ -21,6 +21,7 @@ MatchableGraph graph(int n, const std::vector<std::int32_t>& edges) {
   e.ok = true;
   e.nodes.assign(static_cast<std::size_t>(n) * kNodeColumnCount, 0);
   e.node_attributes.assign(static_cast<std::size_t>(n) * kNodeAttributeCount, 0.0);
+  e.signature.assign(kSignatureLength, 0.0);
   e.edges = edges;
   return make_matchable_graph(e);
 }

@@ -117,7 +117,7 @@ TEST(GraphMatching, SymmetricWithInverseCorrespondence) {
         const GraphMatch ab = match_graphs(a, b, options), ba = match_graphs(b, a, options);
         EXPECT_EQ(ab.distance, ba.distance) << a.name << " vs " << b.name;
         EXPECT_GE(ab.distance, 0.0);
-        EXPECT_LE(ab.distance, options.unmatched_cost + 1e-12);
+        EXPECT_LE(ab.distance, options.unmatched_cost + options.global_shape_weight + 1e-12);
         for (std::size_t i = 0; i < ab.correspondence.size(); ++i) {
           if (ab.correspondence[i] < 0) continue;
           EXPECT_EQ(ba.correspondence[static_cast<std::size_t>(ab.correspondence[i])], static_cast<std::int32_t>(i));
@@ -160,9 +160,11 @@ TEST(GraphMatching, PerturbedCopyIsCloserThanAnotherClass) {
 
 TEST(GraphMatching, DeletingEverythingCostsUnmatchedCost) {
   // With every pair dissimilar beyond twice the deletion cost, nothing is
-  // matched and the distance is exactly unmatched_cost.
+  // matched and the distance is exactly unmatched_cost (the graphs' part,
+  // without the whole surfaces' D2 term).
   MatchingOptions options;
   options.unmatched_cost = 1e-9;
+  options.global_shape_weight = 0.0;
   const GraphMatch m = match_graphs(shapes()[0], shapes()[3], options);
   EXPECT_NEAR(m.distance, options.unmatched_cost, 1e-15);
   for (const std::int32_t j : m.correspondence) EXPECT_EQ(j, -1);
@@ -180,6 +182,7 @@ CollectionEntry random_graph(int n, int extra, std::mt19937& random) {
   for (int i = 0; i < n; ++i)
     for (int c = 0; c < kNodeAttributeCount; ++c)
       e.node_attributes.push_back(c == kNodeStartType || c == kNodeEndType ? type(random) : unit(random));
+  for (int k = 0; k < kSignatureLength; ++k) e.signature.push_back(unit(random));
   for (int i = 1; i < n; ++i) {
     e.edges.push_back(std::uniform_int_distribution<int>(0, i - 1)(random));
     e.edges.push_back(i);
@@ -273,10 +276,29 @@ TEST(GraphMatching, DistanceUpToALimitIsExactBelowIt) {
       }
 }
 
+TEST(GraphMatching, GlobalShapeTermIsHalfTheL1DistanceOfTheD2Histograms) {
+  // The same graph with another whole-surface D2: only g(A, B) differs.
+  const CollectionEntry& a = shapes()[0];
+  CollectionEntry b = a;
+  std::fill(b.signature.begin() + kSigGlobalShape, b.signature.end(), 0.0);
+  b.signature[kSigGlobalShape] = 1.0;
+  double l1 = 0.0;
+  for (int k = kSigGlobalShape; k < kSignatureLength; ++k)
+    l1 += std::abs(a.signature[static_cast<std::size_t>(k)] - b.signature[static_cast<std::size_t>(k)]);
+  ASSERT_GT(l1, 0.1);
+  MatchingOptions options;
+  EXPECT_NEAR(match_graphs(a, b, options).distance, options.global_shape_weight * l1 / 2, 1e-12);
+  options.global_shape_weight = 0.0;
+  EXPECT_EQ(match_graphs(a, b, options).distance, 0.0);
+}
+
 TEST(GraphMatching, RejectsFailedEntries) {
   const CollectionEntry failed = failed_collection_entry("broken.off", "", 0, "not a mesh");
   EXPECT_THROW(match_graphs(failed, shapes()[0]), InvalidArgument);
   EXPECT_THROW(make_matchable_graph(failed), InvalidArgument);
+  CollectionEntry short_signature = shapes()[0];  // e.g. from a layout 1 file
+  short_signature.signature.resize(32);
+  EXPECT_THROW(make_matchable_graph(short_signature), InvalidArgument);
 }
 
 }  // namespace

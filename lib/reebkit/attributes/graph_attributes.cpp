@@ -23,7 +23,13 @@
 //   triangle crossing c_k adds its segment times the share of its vertices in
 //   the region (one third per vertex, as ReebNode::area), so triangles on a
 //   region border are split between the regions like their area. The mean of
-//   length / (2 pi) over the levels, divided by sqrt(mesh area).
+//   length / (2 pi) over the levels, divided by sqrt(mesh area); the radius
+//   profile keeps the kLevels values.
+// - Shape histogram of a region: D2 (Osada et al. 2002) restricted to it,
+//   from kShapeSamples random points drawn by area (a triangle on a border
+//   split between regions like its area), distances / sqrt(region area);
+//   the signature's global D2 is the same on the whole surface. A fixed
+//   seed per region keeps the result a function of the mesh.
 // - Boundary length of an edge (a, b): the curve joining the midpoints of the
 //   mesh edges from a vertex of a to a vertex of b (through the centroid in a
 //   triangle with three regions), the discrete border between the two
@@ -41,19 +47,27 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <random>
 #include <string>
 
 namespace reebkit {
 
 const std::array<const char*, kNodeAttributeCount> kNodeAttributeNames = {
-    "relative_area", "fq_min",       "fq_max", "fq_span",    "geodesic_extent",
-    "mean_radius",   "vertex_share", "degree", "start_type", "end_type"};
+    "relative_area", "fq_min",       "fq_max",       "fq_span",      "geodesic_extent", "mean_radius",
+    "vertex_share",  "degree",       "start_type",   "end_type",     "radius_0",        "radius_1",
+    "radius_2",      "radius_3",     "radius_4",     "radius_5",     "radius_6",        "radius_7",
+    "shape_0",       "shape_1",      "shape_2",      "shape_3",      "shape_4",         "shape_5",
+    "shape_6",       "shape_7"};
 
 const std::array<const char*, kEdgeAttributeCount> kEdgeAttributeNames = {"boundary_length", "event_fq"};
 
 namespace {
 
-constexpr int kLevels = 8;           // level lines per region for kNodeMeanRadius
+constexpr int kLevels = kRadiusProfileLevels;  // level lines per region for kNodeMeanRadius
+constexpr int kShapeSamples = 128;   // random points per region for kNodeShapeHistogram
+constexpr double kShapeBinWidth = 0.2;  // of distance / sqrt(region area)
+constexpr int kGlobalShapeSamples = 512;       // random points of the whole surface for its D2
+constexpr double kGlobalShapeBinWidth = 0.15;  // of distance / sqrt(mesh area)
 constexpr int kSweeps = 1;           // Dijkstra runs per region piece for kNodeGeodesicExtent
 constexpr int kLeafSlots = 6;        // largest leaves listed in the signature
 constexpr int kAreaBins = 6;         // histogram of node relative areas
@@ -67,7 +81,7 @@ constexpr int kSigLeafArea = 6;
 constexpr int kSigLeafExtent = kSigLeafArea + kLeafSlots;
 constexpr int kSigAreaHistogram = kSigLeafExtent + kLeafSlots;
 constexpr int kSigEigenvalues = kSigAreaHistogram + kAreaBins;
-static_assert(kSigEigenvalues + kEigenvalues == kSignatureLength, "signature layout must fill kSignatureLength");
+static_assert(kSigEigenvalues + kEigenvalues == kSigGlobalShape, "signature layout must fill kSignatureLength");
 
 /// Upper ends of the relative area bins but the last: half decades, so that
 /// finger tips (~1e-3) and torsos (> 0.1) land in different bins.
@@ -203,6 +217,98 @@ TriangleSums triangle_sums(const Mesh& mesh, Index original_vertices, const std:
   return sums;
 }
 
+/// A uniform number in [0, 1) from 53 random bits (the same on every platform,
+/// unlike std::uniform_real_distribution).
+double unit(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+
+/// Where to draw random points of a surface from: triangles with cumulative
+/// weights (area, or area times a region's share of the triangle).
+struct Sampler {
+  const Index* triangle;
+  const double* cumulative;
+  std::size_t size;
+  double total() const { return size ? cumulative[size - 1] : 0.0; }
+};
+
+/// Adds to h (bins of `bin_width`, the first centred at bin_width / 2) the
+/// Euclidean distances between all pairs of `samples` random points of
+/// `from`, divided by sqrt(its total weight): the D2 shape distribution of
+/// Osada et al. 2002. Each distance is split linearly between the two
+/// nearest bin centres, so that the histogram moves continuously with the
+/// distances (exact similarity invariance); the result sums to 1.
+void shape_distribution(const Mesh& mesh, const Sampler& from, int samples, double bin_width, std::uint64_t seed,
+                        double* h, int bins) {
+  std::fill_n(h, bins, 0.0);
+  if (!(from.total() > 0.0) || samples < 2) return;
+  std::mt19937_64 rng(seed);
+  std::vector<Vec3> points(at(samples));
+  for (Vec3& p : points) {
+    const double* end = from.cumulative + from.size;
+    const auto k = std::min(std::upper_bound(from.cumulative, end, unit(rng) * from.total()) - from.cumulative,
+                            static_cast<std::ptrdiff_t>(from.size) - 1);
+    const Index t = from.triangle[k];
+    const double r1 = std::sqrt(unit(rng)), r2 = unit(rng);  // uniform on the triangle
+    p = (1.0 - r1) * point(mesh, mesh.triangles(t, 0)) + r1 * (1.0 - r2) * point(mesh, mesh.triangles(t, 1)) +
+        r1 * r2 * point(mesh, mesh.triangles(t, 2));
+  }
+  const double scale = 1.0 / (bin_width * std::sqrt(from.total()));
+  for (int i = 0; i < samples; ++i)
+    for (int j = i + 1; j < samples; ++j) {
+      const double x = std::clamp((points[at(i)] - points[at(j)]).norm() * scale - 0.5, 0.0, bins - 1.0);
+      const int b = std::min(static_cast<int>(x), bins - 2);
+      h[b] += b + 1 - x;
+      h[b + 1] += x - b;
+    }
+  const double pairs = samples * (samples - 1) / 2.0;
+  for (int b = 0; b < bins; ++b) h[b] /= pairs;
+}
+
+/// kNodeShapeHistogram of every region (#nodes x kShapeBins, row-major) and
+/// the whole surface's D2 (kGlobalShapeBins) into `global`.
+std::vector<double> shape_histograms(const Mesh& mesh, Index original_vertices, const ReebGraph& reeb, double* global) {
+  // Each region's triangles (a triangle belongs to each region of its
+  // vertices, weighted by area times its share of them), as cumulative
+  // weights, grouped by region; the surface as read only.
+  const std::size_t nodes = reeb.nodes.size();
+  std::vector<std::size_t> first(nodes + 1, 0);
+  const auto regions = [&](Index t, auto&& visit) {
+    const std::array<Index, 3> label = {reeb.vertex_node[at(mesh.triangles(t, 0))],
+                                        reeb.vertex_node[at(mesh.triangles(t, 1))],
+                                        reeb.vertex_node[at(mesh.triangles(t, 2))]};
+    for (int i = 0; i < 3; ++i)
+      if ((i == 0 || label[at(i)] != label[0]) && (i < 2 || label[2] != label[1]))
+        visit(label[at(i)], static_cast<double>(std::count(label.begin(), label.end(), label[at(i)])) / 3.0);
+  };
+  std::vector<Index> original;
+  for (Index t = 0; t < mesh.num_triangles(); ++t)
+    if (mesh.triangles(t, 0) < original_vertices && mesh.triangles(t, 1) < original_vertices &&
+        mesh.triangles(t, 2) < original_vertices)
+      original.push_back(t);
+  std::vector<double> whole(original.size());
+  for (std::size_t k = 0; k < original.size(); ++k)
+    whole[k] = (k ? whole[k - 1] : 0.0) + triangle_area(mesh, original[k]);
+  shape_distribution(mesh, {original.data(), whole.data(), original.size()}, kGlobalShapeSamples, kGlobalShapeBinWidth,
+                     2006, global, kGlobalShapeBins);
+
+  for (const Index t : original) regions(t, [&](Index node, double) { ++first[at(node) + 1]; });
+  for (std::size_t k = 1; k <= nodes; ++k) first[k] += first[k - 1];
+  std::vector<Index> triangle(first[nodes]);
+  std::vector<double> cumulative(first[nodes]);
+  std::vector<std::size_t> fill(first.begin(), first.end() - 1);
+  std::vector<double> total(nodes, 0.0);
+  for (const Index t : original)
+    regions(t, [&](Index node, double share) {
+      total[at(node)] += share * triangle_area(mesh, t);
+      triangle[fill[at(node)]] = t;
+      cumulative[fill[at(node)]++] = total[at(node)];
+    });
+  std::vector<double> histogram(nodes * kShapeBins, 0.0);
+  for (std::size_t node = 0; node < nodes; ++node)
+    shape_distribution(mesh, {triangle.data() + first[node], cumulative.data() + first[node], first[node + 1] - first[node]},
+                       kShapeSamples, kShapeBinWidth, 2006 + node, histogram.data() + node * kShapeBins, kShapeBins);
+  return histogram;
+}
+
 /// log2(1 + count) / kCountScale.
 double scaled_count(Index count) { return std::log2(1.0 + static_cast<double>(count)) / kCountScale; }
 
@@ -238,7 +344,9 @@ const std::array<const char*, kSignatureLength> kSignatureNames = {
     "leaf_extent_0",  "leaf_extent_1",  "leaf_extent_2",  "leaf_extent_3",  "leaf_extent_4",  "leaf_extent_5",
     "area_hist_0",    "area_hist_1",    "area_hist_2",    "area_hist_3",    "area_hist_4",    "area_hist_5",
     "laplacian_2",    "laplacian_3",    "laplacian_4",    "laplacian_5",    "laplacian_6",    "laplacian_7",
-    "laplacian_8",    "laplacian_9"};
+    "laplacian_8",    "laplacian_9",    "d2_0",           "d2_1",           "d2_2",           "d2_3",
+    "d2_4",           "d2_5",           "d2_6",           "d2_7",           "d2_8",           "d2_9",
+    "d2_10",          "d2_11",          "d2_12",          "d2_13",          "d2_14",          "d2_15"};
 
 GraphAttributes compute_attributes(const MeshAnalysis& analysis) {
   const Mesh& mesh = analysis.mesh;
@@ -256,6 +364,8 @@ GraphAttributes compute_attributes(const MeshAnalysis& analysis) {
   const Index original_vertices = original_vertex_count(mesh);
   const TriangleSums sums = triangle_sums(mesh, original_vertices, f, reeb);
   const std::vector<double> extent = geodesic_extents(analysis.graph, f, reeb);
+  std::array<double, kGlobalShapeBins> global_shape{};
+  const std::vector<double> shape = shape_histograms(mesh, original_vertices, reeb, global_shape.data());
   const double length_unit = sums.total_area > 0.0 ? std::sqrt(sums.total_area) : 1.0;
   const double diameter = analysis.features.diameter > 0.0 ? analysis.features.diameter : 1.0;
   const auto relative = [](double value, double whole) { return whole > 0.0 ? value / whole : 0.0; };
@@ -285,6 +395,10 @@ GraphAttributes compute_attributes(const MeshAnalysis& analysis) {
     row[kNodeDegree] = degree[i];
     row[kNodeStartType] = static_cast<double>(node.type);
     row[kNodeEndType] = static_cast<double>(node.end);
+    for (int k = 0; k < kLevels; ++k)
+      row[kNodeRadiusProfile + k] =
+          sums.level_length[i * kLevels + static_cast<std::size_t>(k)] / (2.0 * static_cast<double>(EIGEN_PI)) / length_unit;
+    std::copy_n(shape.data() + i * kShapeBins, kShapeBins, row + kNodeShapeHistogram);
   }
   out.edge.resize(reeb.edges.size() * kEdgeAttributeCount);
   for (std::size_t e = 0; e < reeb.edges.size(); ++e) {
@@ -318,6 +432,7 @@ GraphAttributes compute_attributes(const MeshAnalysis& analysis) {
   largest(std::move(leaf_area), sig + kSigLeafArea, kLeafSlots);
   largest(std::move(leaf_extent), sig + kSigLeafExtent, kLeafSlots);
   laplacian_spectrum(reeb, degree, sig + kSigEigenvalues);
+  std::copy(global_shape.begin(), global_shape.end(), sig + kSigGlobalShape);
   return out;
 }
 

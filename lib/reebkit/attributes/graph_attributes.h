@@ -25,8 +25,20 @@ enum NodeAttribute : int {
   kNodeDegree,            ///< number of graph edges at the node
   kNodeStartType,         ///< NodeType the region starts with, as a number
   kNodeEndType,           ///< NodeType the region ends with, as a number
-  kNodeAttributeCount
+  /// Thickness profile: the level-line radius (length / (2 pi) / sqrt(mesh
+  /// area)) at each of the kRadiusProfileLevels levels mean_radius averages,
+  /// from fq_min to fq_max.
+  kNodeRadiusProfile,
+  /// Shape of the region: a histogram (kShapeBins bins, sums to 1) of the
+  /// Euclidean distance between random points of the region, / sqrt(region
+  /// area) (the D2 distribution of Osada et al. 2002, restricted to a part).
+  kNodeShapeHistogram = kNodeRadiusProfile + 8,
+  kNodeAttributeCount = kNodeShapeHistogram + 8
 };
+
+/// Levels of kNodeRadiusProfile and bins of kNodeShapeHistogram.
+inline constexpr int kRadiusProfileLevels = kNodeShapeHistogram - kNodeRadiusProfile;
+inline constexpr int kShapeBins = kNodeAttributeCount - kNodeShapeHistogram;
 
 /// Columns of GraphAttributes::edge, in order.
 enum EdgeAttribute : int {
@@ -41,7 +53,12 @@ extern const std::array<const char*, kEdgeAttributeCount> kEdgeAttributeNames;
 
 /// Length of the per-graph signature vector used for nearest-neighbour
 /// pre-filtering (FLANN): fixed whatever the graph.
-inline constexpr int kSignatureLength = 32;
+inline constexpr int kSignatureLength = 48;
+/// The last kGlobalShapeBins entries of the signature: the D2 shape
+/// distribution of the whole surface (distances between random points /
+/// sqrt(mesh area), bins of 0.15, summing to 1), compared by the matcher.
+inline constexpr int kGlobalShapeBins = 16;
+inline constexpr int kSigGlobalShape = kSignatureLength - kGlobalShapeBins;
 /// Name of each signature entry.
 extern const std::array<const char*, kSignatureLength> kSignatureNames;
 

@@ -29,7 +29,11 @@ double node_dissimilarity(const double* x, const double* y, const MatchingOption
                             (x[F::kStartType] != y[F::kStartType] ? 1.0 : 0.0) +
                             (x[F::kEndType] != y[F::kEndType] ? 1.0 : 0.0) +
                             std::abs(x[F::kSqrtNeighbourArea] - y[F::kSqrtNeighbourArea])) / 4.0;
-  return o.attribute_weight * attributes + o.structure_weight * structure;
+  double profile = 0.0, shape = 0.0;
+  for (int k = 0; k < kRadiusProfileLevels; ++k) profile += std::abs(x[F::kProfile + k] - y[F::kProfile + k]);
+  for (int k = 0; k < kShapeBins; ++k) shape += std::abs(x[F::kShape + k] - y[F::kShape + k]);
+  return o.attribute_weight * attributes + o.structure_weight * structure +
+         o.profile_weight * profile / kRadiusProfileLevels + o.shape_weight * shape / 2.0;
 }
 
 /// w_i of the cost model.
@@ -157,6 +161,15 @@ double match_rows(const MatchableGraph& a, const MatchableGraph& b, const Matchi
   return total_weight > 0.0 ? total / total_weight : 0.0;
 }
 
+/// global_shape_weight * g(A, B): half the L1 distance of the whole
+/// surfaces' D2 histograms, weighted (exactly symmetric: |x - y| = |y - x|).
+double global_shape_term(const MatchableGraph& a, const MatchableGraph& b, const MatchingOptions& o) {
+  if (o.global_shape_weight == 0.0) return 0.0;
+  double l1 = 0.0;
+  for (std::size_t k = 0; k < a.global_shape.size(); ++k) l1 += std::abs(a.global_shape[k] - b.global_shape[k]);
+  return o.global_shape_weight * l1 / 2.0;
+}
+
 }  // namespace
 
 MatchableGraph make_matchable_graph(const CollectionEntry& entry) {
@@ -182,6 +195,10 @@ MatchableGraph make_matchable_graph(const CollectionEntry& entry) {
     g.neighbours[static_cast<std::size_t>(fill[static_cast<std::size_t>(u)]++)] = v;
     g.neighbours[static_cast<std::size_t>(fill[static_cast<std::size_t>(v)]++)] = u;
   }
+  if (entry.signature.size() != static_cast<std::size_t>(kSignatureLength))
+    throw InvalidArgument("make_matchable_graph: entry '" + entry.name + "' has a signature of " +
+                          std::to_string(entry.signature.size()) + " entries, not " + std::to_string(kSignatureLength));
+  g.global_shape.assign(entry.signature.begin() + kSigGlobalShape, entry.signature.end());
   const auto attribute = [&](std::size_t i, NodeAttribute c) { return entry.node_attributes[i * kNodeAttributeCount + c]; };
   for (std::size_t i = 0; i < n; ++i) g.relative_area[i] = attribute(i, kNodeRelativeArea);
   g.features.resize(n * MatchableGraph::kFeatureCount);
@@ -199,6 +216,8 @@ MatchableGraph make_matchable_graph(const CollectionEntry& entry) {
     x[F::kDegree] = static_cast<double>(g.neighbour_offset[i + 1] - g.neighbour_offset[i]);
     x[F::kStartType] = attribute(i, kNodeStartType);
     x[F::kEndType] = attribute(i, kNodeEndType);
+    for (int k = 0; k < kRadiusProfileLevels; ++k) x[F::kProfile + k] = attribute(i, NodeAttribute(kNodeRadiusProfile + k));
+    for (int k = 0; k < kShapeBins; ++k) x[F::kShape + k] = attribute(i, NodeAttribute(kNodeShapeHistogram + k));
   }
   return g;
 }
@@ -215,6 +234,7 @@ GraphMatch match_graphs(const MatchableGraph& a, const MatchableGraph& b, const 
     for (std::size_t j = 0; j < workspace.forward.size(); ++j)
       if (workspace.forward[j] >= 0) match.correspondence[static_cast<std::size_t>(workspace.forward[j])] = static_cast<std::int32_t>(j);
   }
+  match.distance += global_shape_term(a, b, options);
   return match;
 }
 
@@ -244,7 +264,7 @@ double match_lower_bound(const MatchableGraph& a, const MatchableGraph& b, const
   double total_weight = 0.0;
   for (std::size_t i = 0; i < un; ++i) total_weight += node_weight(a, i, o);
   for (std::size_t j = 0; j < um; ++j) total_weight += node_weight(b, j, o);
-  if (!(total_weight > 0.0)) return 0.0;  // match_graphs' distance is then 0
+  if (!(total_weight > 0.0)) return global_shape_term(a, b, options);  // the graphs' part is then 0
   thread_local std::vector<double> column_best, insert;
   column_best.resize(um);
   insert.resize(um);
@@ -274,13 +294,20 @@ double match_lower_bound(const MatchableGraph& a, const MatchableGraph& b, const
     by_columns += column_best[j];
     magnitude += std::abs(column_best[j]);
   }
-  return (std::max(inserts + by_rows, deletes + by_columns) - 1e-9 * magnitude) / total_weight;
+  return (std::max(inserts + by_rows, deletes + by_columns) - 1e-9 * magnitude) / total_weight +
+         global_shape_term(a, b, options);
 }
 
 double match_distance_up_to(const MatchableGraph& a, const MatchableGraph& b, double limit,
                             const MatchingOptions& options) {
   Workspace& workspace = thread_workspace();
-  return rows_first(a, b) ? match_rows(a, b, options, workspace, limit) : match_rows(b, a, options, workspace, limit);
+  // The graphs' part may stop once above limit - g; the slack keeps rounding
+  // from stopping it when the sum is exactly at the limit.
+  const double global = global_shape_term(a, b, options);
+  const double part_limit = limit - global + 1e-12 * (1.0 + std::abs(limit));
+  return (rows_first(a, b) ? match_rows(a, b, options, workspace, part_limit)
+                           : match_rows(b, a, options, workspace, part_limit)) +
+         global;
 }
 
 GraphMatch match_graphs(const CollectionEntry& a, const CollectionEntry& b, const MatchingOptions& options) {

@@ -15,24 +15,32 @@ namespace reebkit {
 /// The cost model (README: "Graph matching"). A node i carries the weight
 /// w_i = relative area + min_node_weight. Matching node i of A to node j of
 /// B costs (w_i + w_j) / 2 * (attribute_weight * a(i, j) + structure_weight
-/// * s(i, j) + edge_weight * e(i, j)), leaving node i unmatched costs
-/// unmatched_cost * w_i, and the distance is the total cost of the cheapest
-/// correspondence over (W_A + W_B), W = sum of the weights, so it lies in
-/// [0, unmatched_cost]. a, s and e are in [0, 1]:
+/// * s(i, j) + edge_weight * e(i, j) + profile_weight * p(i, j) +
+/// shape_weight * h(i, j)), leaving node i unmatched costs unmatched_cost *
+/// w_i; the graphs' part of the distance is the total cost of the cheapest
+/// correspondence over (W_A + W_B), W = sum of the weights, in [0,
+/// unmatched_cost], and the distance adds global_shape_weight * g(A, B).
+/// a, s, e, h and g are in [0, 1]:
 /// - a: mean absolute difference of sqrt(relative area), f_q min, f_q max,
 ///   geodesic extent and mean radius (attributes/graph_attributes.h);
 /// - s: mean of the relative degree difference |d_i - d_j| / max(d_i, d_j),
 ///   the start and end types differing (0 or 1 each) and the difference of
 ///   sqrt(sum of the neighbours' relative areas);
 /// - e: the share of matched neighbours of i and j whose partners are not
-///   neighbours of j and i (edge consistency, from the correspondence).
-/// Defaults: the best leave-one-out nearest-neighbour rate on SHREC07
-/// (results/matching_weights.md).
+///   neighbours of j and i (edge consistency, from the correspondence);
+/// - p: mean absolute difference of the radius profiles (kNodeRadiusProfile);
+/// - h: half the L1 distance of the regions' shape histograms (kNodeShapeHistogram);
+/// - g: half the L1 distance of the whole surfaces' D2 (signature entries
+///   kSigGlobalShape on), the one term not invariant to bending.
+/// Defaults: measured on SHREC07 (results/matching_weights.md).
 struct MatchingOptions {
   double attribute_weight = 4.0;   ///< weight of a(i, j)
   double structure_weight = 1.0;   ///< weight of s(i, j)
   double edge_weight = 0.25;       ///< weight of e(i, j)
-  double unmatched_cost = 0.5;     ///< cost of deleting or inserting a node, per unit of node weight
+  double profile_weight = 32.0;    ///< weight of p(i, j)
+  double shape_weight = 4.0;       ///< weight of h(i, j)
+  double global_shape_weight = 1.6;  ///< weight of g(A, B)
+  double unmatched_cost = 1.0;     ///< cost of deleting or inserting a node, per unit of node weight
   double min_node_weight = 0.01;   ///< added to the relative area so that area-less nodes still count
   /// Rounds of edge-consistency refinement: the assignment is solved again
   /// with e(i, j) from the previous correspondence (the first solve has e =
@@ -52,13 +60,14 @@ struct GraphMatch {
 struct MatchableGraph {
   /// Columns of `features`, all in [0, ~1].
   enum Feature : int { kSqrtArea, kFqMin, kFqMax, kExtent, kRadius, kSqrtNeighbourArea, kDegree, kStartType, kEndType,
-                       kFeatureCount };
+                       kProfile, kShape = kProfile + kRadiusProfileLevels, kFeatureCount = kShape + kShapeBins };
   std::int32_t num_nodes = 0;
   std::vector<double> features;           ///< num_nodes x kFeatureCount, row-major
   std::vector<double> relative_area;      ///< per node
   std::vector<std::int32_t> neighbour_offset;  ///< num_nodes + 1, into neighbours (CSR)
   std::vector<std::int32_t> neighbours;
   std::vector<char> adjacent;             ///< num_nodes x num_nodes, 1 where an edge joins the nodes
+  std::vector<double> global_shape;       ///< kGlobalShapeBins: the D2 of the whole surface (signature)
 };
 
 /// The matchable form of an entry's graph.

@@ -16,7 +16,7 @@
 namespace reebkit {
 
 /// Version of the dataset layout, stored as the file attribute `layout`.
-inline constexpr int kCollectionLayoutVersion = 1;
+inline constexpr int kCollectionLayoutVersion = 2;
 
 /// Integer columns of the `nodes` dataset.
 enum NodeColumn : int { kNodeType, kNodeEnd, kNodeBirthVertex, kNodeVertexCount, kNodeColumnCount };
