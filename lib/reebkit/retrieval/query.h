@@ -18,10 +18,12 @@ namespace reebkit {
 struct QueryOptions {
   int k = 10;             ///< results returned; >= 1
   int candidates = 100;   ///< nearest signatures reranked by graph matching (at least k); >= 1
-  /// OpenMP threads matching the candidates; 0 = omp_get_max_threads(). One by
-  /// default: a typical query matches its 100 candidates in under 1 ms, less
-  /// than waking a second thread costs on a busy machine (bench/retrieval_bench);
-  /// more threads pay for large query graphs (100+ nodes).
+  /// OpenMP threads bounding and matching the candidates; 0 =
+  /// omp_get_max_threads(). One by default: a typical query takes 0.5 ms and
+  /// the slowest of bench/retrieval_bench (a 113-node graph) 12 ms on one
+  /// thread; with a free core two threads take that to 9 ms, but on a busy
+  /// machine a query's second thread waits for a core (median 16 ms with two
+  /// threads at load 3 on 2 cores).
   int threads = 1;
   /// Match the candidates by increasing match_lower_bound and skip those
   /// whose bound is above the k-th best distance found so far: the same
