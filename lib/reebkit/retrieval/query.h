@@ -46,9 +46,10 @@ struct SearchableCollection {
   std::vector<CollectionEntry> entries;
   SignatureIndex index;
   /// make_matchable_graph of each entry (an empty graph for a failed entry),
-  /// built once instead of once per query and candidate: 1.8 KB per graph
-  /// on SHREC07 as allocated (17.6 MB for 10,000 graphs of 3 to 113 nodes,
-  /// 3.5 MB of it the dense n x n adjacency, kept: it is the fastest edge test).
+  /// built once instead of once per query and candidate: 3.6 KB per graph
+  /// on SHREC07 as allocated (36 MB for 10,000 graphs of 3 to 113 nodes,
+  /// 28 MB of it the node features, 3.5 MB the dense n x n adjacency, kept:
+  /// it is the fastest edge test).
   std::vector<MatchableGraph> graphs;
 };
 
