@@ -2,8 +2,8 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cmath>
-#include <utility>
 
 namespace reebkit {
 
@@ -125,8 +125,14 @@ FastMarchingSolver::FastMarchingSolver(const MeshGraph& graph)
         }
     }
 
-  // Split the obtuse corners: (trigger, virtual triangle) pairs, then CSR.
-  std::vector<std::pair<Index, VirtualTriangle>> split;
+  // Split the obtuse corners (w, v, u) by a vertex y, then store each of the
+  // virtual triangles (w, v, y) and (w, y, u) at both its corners other than w.
+  struct Split {
+    Index w, v, u, y;
+    bool one_triangle;           // the unfolded strip is the triangle across vu alone
+    double wv, wu, wy, vy, uy;  // side lengths in the unfolded plane
+  };
+  std::vector<Split> split;
   for (Index w = 0; w < n; ++w)
     for (Index i = offset[w]; i < offset[w + 1]; ++i) {
       if (!graph.link_next[static_cast<std::size_t>(i)]) continue;
@@ -149,13 +155,7 @@ FastMarchingSolver::FastMarchingSolver(const MeshGraph& graph)
         const Vec2 Y = place_beyond(P, Q, across.py, across.qy);
         const bool beyond_v_side = Y.dot(V) < 0.0, beyond_u_side = Y.dot(U) < 0.0;
         if (!beyond_v_side && !beyond_u_side) {
-          const Index y = across.y;
-          const double wy = Y.norm(), vy = (Y - V).norm(), uy = (Y - U).norm();
-          const Index strip_u = step == 0 ? u : kInvalidIndex, strip_v = step == 0 ? v : kInvalidIndex;
-          split.push_back({v, VirtualTriangle{w, y, strip_u, e1, wy, vy}});
-          split.push_back({y, VirtualTriangle{w, v, strip_u, wy, e1, vy}});
-          split.push_back({y, VirtualTriangle{w, u, strip_v, wy, e2, uy}});
-          split.push_back({u, VirtualTriangle{w, y, strip_v, e2, wy, uy}});
+          split.push_back({w, v, u, across.y, step == 0, e1, e2, Y.norm(), (Y - V).norm(), (Y - U).norm()});
           break;
         }
         // The section lies between P's direction and Y's, or Y's and Q's.
@@ -167,11 +167,21 @@ FastMarchingSolver::FastMarchingSolver(const MeshGraph& graph)
       }
     }
   virtual_offset_.assign(static_cast<std::size_t>(n) + 1, 0);
-  for (const auto& [trigger, t] : split) ++virtual_offset_[static_cast<std::size_t>(trigger) + 1];
+  for (const Split& c : split)
+    for (const Index trigger : {c.v, c.y, c.y, c.u}) ++virtual_offset_[static_cast<std::size_t>(trigger) + 1];
   for (Index v = 0; v < n; ++v) virtual_offset_[static_cast<std::size_t>(v) + 1] += virtual_offset_[static_cast<std::size_t>(v)];
-  virtual_.resize(split.size());
+  virtual_.resize(4 * split.size());
   std::vector<Index> fill(virtual_offset_.begin(), virtual_offset_.end() - 1);
-  for (const auto& [trigger, t] : split) virtual_[static_cast<std::size_t>(fill[static_cast<std::size_t>(trigger)]++)] = t;
+  const auto put = [&](Index trigger, const VirtualTriangle& t) {
+    virtual_[static_cast<std::size_t>(fill[static_cast<std::size_t>(trigger)]++)] = t;
+  };
+  for (const Split& c : split) {
+    const Index strip_u = c.one_triangle ? c.u : kInvalidIndex, strip_v = c.one_triangle ? c.v : kInvalidIndex;
+    put(c.v, {c.w, c.y, strip_u, c.wv, c.wy, c.vy});  // (w, v, y)
+    put(c.y, {c.w, c.v, strip_u, c.wy, c.wv, c.vy});
+    put(c.y, {c.w, c.u, strip_v, c.wy, c.wu, c.uy});  // (w, y, u)
+    put(c.u, {c.w, c.y, strip_v, c.wu, c.wy, c.uy});
+  }
 }
 
 const DistanceField& FastMarchingSolver::run(const std::vector<Index>& sources, const GeodesicOptions& options) {
