@@ -2,14 +2,18 @@
 //
 //   build/bench/features_bench [--benchmark_filter=...]
 //
-// Dijkstra: one full single-source pass on generated tori of 10k, 100k and 1M
-// vertices (items/s = vertices settled per second; target >= 4 M/s on one
-// core). Features: feature points + f_q from a built mesh graph (target <= 60
-// ms for a 100k-face mesh), on generated meshes and, when ../shared is
-// beside the checkout, on the largest SHREC07 mesh. Single-threaded code.
+// Dijkstra and fast marching: one full single-source pass on generated tori
+// of 10k, 100k and 1M vertices (items/s = vertices settled per second; target
+// >= 4 M/s on one core); fast marching's one-time precomputation (third sides
+// of the triangles, splits of obtuse corners) on its own. Features: feature
+// points + f_q from a built mesh graph (target <= 60 ms for a 100k-face
+// mesh), with Dijkstra and (the _FMM cases) fast marching, on generated
+// meshes and, when ../shared is beside the checkout, on the largest SHREC07
+// mesh. Single-threaded code.
 #include "reebkit/features/feature_points.h"
 #include "reebkit/features/quotient_function.h"
 #include "reebkit/geodesic/dijkstra.h"
+#include "reebkit/geodesic/fast_marching.h"
 #include "reebkit/mesh/load_mesh.h"
 #include "reebkit/mesh/shapes.h"
 
@@ -60,10 +64,10 @@ void report_size(benchmark::State& state, const Case& c) {
   state.counters["faces"] = c.mesh.num_triangles();
 }
 
-// Tori with major x minor = 10k, 100k, 1M vertices.
-void BM_DijkstraFullPass(benchmark::State& state) {
-  const Case& c = torus_case(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
-  DijkstraSolver solver(c.graph);
+// One full single-source pass per iteration, from a different source each time.
+template <class Solver>
+void run_full_passes(benchmark::State& state, const Case& c) {
+  Solver solver(c.graph);
   Index source = 0;
   for (auto _ : state) {
     benchmark::DoNotOptimize(solver.run({source}).max_distance);
@@ -72,13 +76,33 @@ void BM_DijkstraFullPass(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * c.mesh.num_vertices());
   report_size(state, c);
 }
-BENCHMARK(BM_DijkstraFullPass)->Args({200, 50})->Args({500, 200})->Args({2000, 500})->Unit(benchmark::kMillisecond);
 
-void run_features(benchmark::State& state, const Case& c) {
+// Tori with major x minor = 10k, 100k, 1M vertices.
+const Case& torus_arg(const benchmark::State& state) {
+  return torus_case(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
+}
+void BM_DijkstraFullPass(benchmark::State& state) { run_full_passes<DijkstraSolver>(state, torus_arg(state)); }
+BENCHMARK(BM_DijkstraFullPass)->Args({200, 50})->Args({500, 200})->Args({2000, 500})->Unit(benchmark::kMillisecond);
+void BM_FastMarchingFullPass(benchmark::State& state) { run_full_passes<FastMarchingSolver>(state, torus_arg(state)); }
+BENCHMARK(BM_FastMarchingFullPass)->Args({200, 50})->Args({500, 200})->Args({2000, 500})->Unit(benchmark::kMillisecond);
+
+// The solver's construction: paid once per extract_feature_points and once
+// per quotient_function.
+void BM_FastMarchingSetup(benchmark::State& state) {
+  const Case& c = torus_arg(state);
+  for (auto _ : state) benchmark::DoNotOptimize(FastMarchingSolver(c.graph).split_corners());
+  state.SetItemsProcessed(state.iterations() * c.mesh.num_vertices());
+  report_size(state, c);
+}
+BENCHMARK(BM_FastMarchingSetup)->Args({500, 200})->Unit(benchmark::kMillisecond);
+
+void run_features(benchmark::State& state, const Case& c, Geodesic method = Geodesic::Dijkstra) {
+  FeatureOptions options;
+  options.geodesic = method;
   std::size_t count = 0;
   for (auto _ : state) {
-    const FeaturePoints fp = extract_feature_points(c.graph);
-    const QuotientFunction fq = quotient_function(c.graph, fp.vertices);
+    const FeaturePoints fp = extract_feature_points(c.graph, options);
+    const QuotientFunction fq = quotient_function(c.graph, fp.vertices, method);
     benchmark::DoNotOptimize(fq.value.data());
     count = fp.vertices.size();
   }
@@ -89,14 +113,26 @@ void run_features(benchmark::State& state, const Case& c) {
 // A torus of 50k vertices and exactly 100k faces.
 void BM_FeaturesAndQuotient_Torus100kFaces(benchmark::State& state) { run_features(state, torus_case(250, 200)); }
 BENCHMARK(BM_FeaturesAndQuotient_Torus100kFaces)->Unit(benchmark::kMillisecond);
+void BM_FeaturesAndQuotient_Torus100kFaces_FMM(benchmark::State& state) {
+  run_features(state, torus_case(250, 200), Geodesic::FastMarching);
+}
+BENCHMARK(BM_FeaturesAndQuotient_Torus100kFaces_FMM)->Unit(benchmark::kMillisecond);
 
 // Six-armed stars: levels 6 = 82k faces, 7 = 328k faces.
 void BM_FeaturesAndQuotient_Star(benchmark::State& state) { run_features(state, star_case(static_cast<int>(state.range(0)))); }
 BENCHMARK(BM_FeaturesAndQuotient_Star)->Arg(6)->Arg(7)->Unit(benchmark::kMillisecond);
+void BM_FeaturesAndQuotient_Star_FMM(benchmark::State& state) {
+  run_features(state, star_case(static_cast<int>(state.range(0))), Geodesic::FastMarching);
+}
+BENCHMARK(BM_FeaturesAndQuotient_Star_FMM)->Arg(6)->Arg(7)->Unit(benchmark::kMillisecond);
 
 // A torus of 1M vertices (2M faces).
 void BM_FeaturesAndQuotient_Torus1M(benchmark::State& state) { run_features(state, torus_case(2000, 500)); }
 BENCHMARK(BM_FeaturesAndQuotient_Torus1M)->Unit(benchmark::kMillisecond);
+void BM_FeaturesAndQuotient_Torus1M_FMM(benchmark::State& state) {
+  run_features(state, torus_case(2000, 500), Geodesic::FastMarching);
+}
+BENCHMARK(BM_FeaturesAndQuotient_Torus1M_FMM)->Unit(benchmark::kMillisecond);
 
 void BM_MeshGraph_Torus100kFaces(benchmark::State& state) {
   const Case& c = torus_case(250, 200);
@@ -120,15 +156,18 @@ void register_shrec() {
   static Case shrec;
   shrec.mesh = load_mesh(largest).components.front();
   shrec.graph = build_mesh_graph(shrec.mesh);
-  benchmark::RegisterBenchmark(("BM_FeaturesAndQuotient_SHREC07/" + largest.filename().string()).c_str(),
+  const std::string name = largest.filename().string();
+  benchmark::RegisterBenchmark(("BM_FeaturesAndQuotient_SHREC07/" + name).c_str(),
                                [](benchmark::State& state) { run_features(state, shrec); })
       ->Unit(benchmark::kMillisecond);
-  benchmark::RegisterBenchmark(("BM_DijkstraFullPass_SHREC07/" + largest.filename().string()).c_str(),
-                               [](benchmark::State& state) {
-                                 DijkstraSolver solver(shrec.graph);
-                                 for (auto _ : state) benchmark::DoNotOptimize(solver.run({0}).max_distance);
-                                 state.SetItemsProcessed(state.iterations() * shrec.mesh.num_vertices());
-                               })
+  benchmark::RegisterBenchmark(("BM_FeaturesAndQuotient_SHREC07_FMM/" + name).c_str(),
+                               [](benchmark::State& state) { run_features(state, shrec, Geodesic::FastMarching); })
+      ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark(("BM_DijkstraFullPass_SHREC07/" + name).c_str(),
+                               [](benchmark::State& state) { run_full_passes<DijkstraSolver>(state, shrec); })
+      ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark(("BM_FastMarchingFullPass_SHREC07/" + name).c_str(),
+                               [](benchmark::State& state) { run_full_passes<FastMarchingSolver>(state, shrec); })
       ->Unit(benchmark::kMillisecond);
 }
 

@@ -1,7 +1,7 @@
 // The whole per-mesh pipeline (mesh graph + feature points + f_q + Reeb
 // graph; file parsing excluded): time, growth with mesh size, peak memory.
 //
-//   build/bench/pipeline_bench
+//   build/bench/pipeline_bench [--geodesic dijkstra|fmm]
 //
 // Prints, for generated tori of 10k to 1M vertices (2 faces per vertex) and
 // six-armed stars, the median of 3 runs (and the steps of that run) of analyze_mesh, the fitted growth
@@ -23,6 +23,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <new>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -69,6 +70,8 @@ struct Measurement {
   std::size_t nodes = 0;
 };
 
+AnalysisOptions g_options;  // --geodesic sets the method of the feature points and f_q
+
 Measurement measure(const std::string& name, const Mesh& mesh) {
   Measurement m;
   m.name = name;
@@ -82,7 +85,7 @@ Measurement measure(const std::string& name, const Mesh& mesh) {
     const std::size_t input_bytes = static_cast<std::size_t>(input.vertices.size()) * sizeof(double) +
                                     static_cast<std::size_t>(input.triangles.size()) * sizeof(Index);
     Timer timer;
-    const MeshAnalysis a = analyze_mesh(std::move(input));
+    const MeshAnalysis a = analyze_mesh(std::move(input), g_options);
     runs.emplace_back(timer.lap(), a.timings);
     m.bytes_per_vertex = static_cast<double>(g_peak.load() - before + input_bytes) / m.vertices;
     m.nodes = a.reeb.nodes.size();
@@ -106,7 +109,15 @@ void header() {
 
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+  try {
+    if (argc == 3 && std::string(argv[1]) == "--geodesic") g_options.features.geodesic = parse_geodesic(argv[2]);
+    else if (argc != 1) throw std::invalid_argument("unexpected arguments");
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "pipeline_bench: %s\nusage: pipeline_bench [--geodesic dijkstra|fmm]\n", e.what());
+    return 2;
+  }
+  std::printf("geodesic distances: %s\n", geodesic_name(g_options.features.geodesic));
   header();
   // Tori with a 4:1 grid: 10k, 31.6k, 100k, 316k, 1M vertices.
   std::vector<Measurement> tori;
