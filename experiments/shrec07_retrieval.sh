@@ -11,7 +11,9 @@
 # report.md, pr.csv, pr.png, pr.svg, failing_queries.png. The collection file and the distance
 # matrices are derived from academic-use data: they stay in
 # BUILD_DIR/shrec07_retrieval/ and are never committed. THREADS (default 2)
-# sets the threads of every step.
+# sets the threads of every step. Every method is also evaluated after local
+# scaling with its SCALING_K-th (default 10) nearest model (reeb eval
+# --local-scaling).
 set -euo pipefail
 
 if [ $# -lt 1 ] || [ $# -gt 2 ]; then
@@ -22,6 +24,7 @@ build=$(cd "$1" && pwd)
 source_dir=$(cd "$(dirname "$0")/.." && pwd)
 report=${2:-$source_dir/results/shrec07}
 threads=${THREADS:-2}
+scaling_k=${SCALING_K:-10}
 data=$build/data/shrec07_watertight
 cla=$data/shrec07_watertight.cla
 work=$build/shrec07_retrieval
@@ -50,7 +53,8 @@ step "baselines: D2 and geodesic histogram distances" \
   env OMP_NUM_THREADS="$threads" "$baselines" "$data" "$cla" "$work/baseline"
 step "evaluation report" \
   "$reeb" eval "$work/reebkit.matrix" --name reebkit --cla "$cla" -o "$report" \
-    --compare "$work/baseline-d2.matrix:D2" "$work/baseline-geodesic.matrix:geodesic-histogram"
+    --compare "$work/baseline-d2.matrix:D2" "$work/baseline-geodesic.matrix:geodesic-histogram" \
+    --local-scaling "$scaling_k"
 step "pictures of the worst reebkit queries" \
   /usr/bin/python3 "$source_dir/tools/figures/query_montage.py" "$work/reebkit.matrix" "$cla" "$data" \
     "$report/failing_queries.png" --queries 4 --results 4

@@ -100,6 +100,31 @@ TEST_F(ReebEvalCli, ReportsTheHandComputedMeasuresOfTwoMethods) {
   EXPECT_TRUE(contains(read_file_bytes(out / "pr.svg"), "<svg"));
 }
 
+// A tight class at 0, 0.1, 0.2 and a loose one at 1, 2, 3 on a line: as read,
+// 1.0's nearest neighbour is 0.2 (NN 5/6); local scaling with k = 2 puts every
+// nearest neighbour in its class (local_scaling_test.cpp has the radii).
+TEST_F(ReebEvalCli, LocalScalingIsEvaluatedBesideTheMatrixAsRead) {
+  write_bytes(dir_ / "line.cla", "PSB 1\n2 6\n\ntight 0 3\nm0\nm1\nm2\n\nloose 0 3\nm3\nm4\nm5\n");
+  const double x[6] = {0.0, 0.1, 0.2, 1.0, 2.0, 3.0};
+  DistanceMatrix d(6, 6);
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j) d(i, j) = static_cast<float>(std::abs(x[i] - x[j]));
+  write_psb_matrix(dir_ / "line.matrix", d);
+  const auto [status, printed] =
+      run_captured(reeb("'" + (dir_ / "line.matrix").string() + "' --cla '" + (dir_ / "line.cla").string() + "' -o '" +
+                        (dir_ / "r").string() + "' --no-plot --local-scaling 2"),
+                   dir_ / "log.txt");
+  ASSERT_EQ(status, 0) << printed;
+  EXPECT_TRUE(contains(printed, "| line | micro (6 queries) | " + fixed3(5 / 6.0) + " |")) << printed;
+  EXPECT_TRUE(contains(printed, "| line + local scaling (k = 2) | micro (6 queries) | 1.000 |")) << printed;
+  const auto [bad, message] =
+      run_captured(reeb("'" + (dir_ / "line.matrix").string() + "' --cla '" + (dir_ / "line.cla").string() + "' -o '" +
+                        (dir_ / "r").string() + "' --no-plot --local-scaling 6"),
+                   dir_ / "log.txt");
+  EXPECT_EQ(bad, 1);
+  EXPECT_TRUE(contains(message, "k = 6 is not in [1, 5]")) << message;
+}
+
 TEST_F(ReebEvalCli, AMatrixOfTheWrongSizeIsAnErrorNamingTheFile) {
   write_psb_matrix(dir_ / "small.matrix", DistanceMatrix::Zero(4, 4));
   const auto [status, printed] = run_captured(

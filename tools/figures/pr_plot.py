@@ -51,7 +51,7 @@ def main():
     ax.set_ylabel("precision (interpolated)")
     ax.set_title(args.title or f"precision-recall ({args.curve} average)")
     ax.grid(True, alpha=0.3)
-    ax.legend(loc="upper right")  # the curves fall from the upper left
+    ax.legend(loc="lower left", fontsize="small")  # the curves fall from the upper left: that corner stays empty
     fig.tight_layout()
     fig.savefig(args.png, dpi=120)
     fig.savefig(args.svg)

@@ -6,6 +6,7 @@
 #include "reebkit/collection/psb_classes.h"
 #include "reebkit/core/error.h"
 #include "reebkit/evaluation/distance_matrix.h"
+#include "reebkit/evaluation/local_scaling.h"
 #include "reebkit/evaluation/retrieval_metrics.h"
 #include "reebkit/io/file_bytes.h"
 
@@ -128,6 +129,7 @@ int run_eval(const std::vector<std::string>& args) {
   std::string matrix_path, cla_path, out_dir, name;
   std::vector<std::string> compare;
   bool no_plot = false;
+  int scaling_k = 0;
   options.add_options()
       ("matrix", po::value(&matrix_path)->required(),
        "distance matrix: PSB binary .matrix (float32 N x N) or SHREC ASCII (any other extension)")
@@ -135,11 +137,15 @@ int run_eval(const std::vector<std::string>& args) {
       ("output,o", po::value(&out_dir)->required(), "report folder: report.md, pr.csv, pr.png, pr.svg")
       ("name", po::value(&name), "name of the method in the report (default: the matrix file name)")
       ("compare", po::value(&compare)->multitoken(), "other methods' matrices as PATH[:NAME], evaluated alike")
+      ("local-scaling", po::value(&scaling_k)->default_value(0),
+       "also evaluate every matrix after local scaling with the K-th nearest model (evaluation/local_scaling.h; 0: off)")
       ("no-plot", po::bool_switch(&no_plot), "skip pr.png / pr.svg (they need /usr/bin/python3 with matplotlib)");
   po::positional_options_description positional;
   positional.add("matrix", 1);
   po::variables_map vm;
-  if (!parse(args, "reeb eval DIST.matrix --cla CLASSES.cla -o REPORT/ [--name METHOD] [--compare M.matrix:NAME ...]",
+  if (!parse(args,
+             "reeb eval DIST.matrix --cla CLASSES.cla -o REPORT/ [--name METHOD] [--compare M.matrix:NAME ...] "
+             "[--local-scaling K]",
              options, positional, vm))
     return 0;
 
@@ -147,6 +153,8 @@ int run_eval(const std::vector<std::string>& args) {
   std::vector<Method> methods{method_of(matrix_path)};
   if (!name.empty()) methods.front().name = name;
   for (const std::string& spec : compare) methods.push_back(method_of(spec));
+  if (scaling_k < 0) throw InvalidArgument("reeb eval: --local-scaling must be >= 0 (0: off), not " + std::to_string(scaling_k));
+  std::vector<Method> scaled;
   for (Method& m : methods) {
     const DistanceMatrix distances = read_distance_matrix(m.matrix);
     if (static_cast<std::size_t>(distances.rows()) != classes.of_model.size())
@@ -154,7 +162,11 @@ int run_eval(const std::vector<std::string>& args) {
                   std::to_string(distances.rows()) + " distances, but " + cla_path + " lists " +
                   std::to_string(classes.of_model.size()) + " models");
     m.result = evaluate_retrieval(distances, classes);
+    if (scaling_k > 0)
+      scaled.push_back({m.name + " + local scaling (k = " + std::to_string(scaling_k) + ")", m.matrix,
+                        evaluate_retrieval(local_scaling(distances, scaling_k), classes)});
   }
+  methods.insert(methods.end(), scaled.begin(), scaled.end());
 
   const std::filesystem::path dir(out_dir);
   std::filesystem::create_directories(dir);
