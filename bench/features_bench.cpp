@@ -8,9 +8,11 @@
 // of the triangles, splits of obtuse corners) on its own. Features: feature
 // points + f_q from a built mesh graph (target <= 60 ms for a 100k-face
 // mesh), with Dijkstra and (the _FMM cases) fast marching, on generated
-// meshes and, when ../shared is beside the checkout, on the largest SHREC07
+// meshes (the _Persistence cases with FeatureOptions::min_persistence = 0.02,
+// and the persistence of one field on its own) and, when ../shared is beside the checkout, on the largest SHREC07
 // mesh. Single-threaded code.
 #include "reebkit/features/feature_points.h"
+#include "reebkit/features/persistence.h"
 #include "reebkit/features/quotient_function.h"
 #include "reebkit/geodesic/dijkstra.h"
 #include "reebkit/geodesic/fast_marching.h"
@@ -96,9 +98,11 @@ void BM_FastMarchingSetup(benchmark::State& state) {
 }
 BENCHMARK(BM_FastMarchingSetup)->Args({500, 200})->Unit(benchmark::kMillisecond);
 
-void run_features(benchmark::State& state, const Case& c, Geodesic method = Geodesic::Dijkstra) {
+void run_features(benchmark::State& state, const Case& c, Geodesic method = Geodesic::Dijkstra,
+                  double min_persistence = 0.0) {
   FeatureOptions options;
   options.geodesic = method;
+  options.min_persistence = min_persistence;
   std::size_t count = 0;
   for (auto _ : state) {
     const FeaturePoints fp = extract_feature_points(c.graph, options);
@@ -117,6 +121,27 @@ void BM_FeaturesAndQuotient_Torus100kFaces_FMM(benchmark::State& state) {
   run_features(state, torus_case(250, 200), Geodesic::FastMarching);
 }
 BENCHMARK(BM_FeaturesAndQuotient_Torus100kFaces_FMM)->Unit(benchmark::kMillisecond);
+// With the extrema of f1 and f2 filtered by persistence (2 % of the diameter).
+void BM_FeaturesAndQuotient_Torus100kFaces_Persistence(benchmark::State& state) {
+  run_features(state, torus_case(250, 200), Geodesic::Dijkstra, 0.02);
+}
+BENCHMARK(BM_FeaturesAndQuotient_Torus100kFaces_Persistence)->Unit(benchmark::kMillisecond);
+void BM_FeaturesAndQuotient_Torus100kFaces_FMM_Persistence(benchmark::State& state) {
+  run_features(state, torus_case(250, 200), Geodesic::FastMarching, 0.02);
+}
+BENCHMARK(BM_FeaturesAndQuotient_Torus100kFaces_FMM_Persistence)->Unit(benchmark::kMillisecond);
+
+// The persistence of every extremum of one distance field (a sort of the
+// vertices, then a union-find sweep each way); extract_feature_points with
+// min_persistence > 0 pays it for f1 and f2.
+void BM_ExtremaPersistence_Torus100kFaces(benchmark::State& state) {
+  const Case& c = torus_case(250, 200);
+  const std::vector<double> f = dijkstra(c.graph, 0).distance;
+  for (auto _ : state) benchmark::DoNotOptimize(extrema_persistence(c.graph, f).maxima.data());
+  state.SetItemsProcessed(state.iterations() * c.mesh.num_vertices());
+  report_size(state, c);
+}
+BENCHMARK(BM_ExtremaPersistence_Torus100kFaces)->Unit(benchmark::kMillisecond);
 
 // Six-armed stars: levels 6 = 82k faces, 7 = 328k faces.
 void BM_FeaturesAndQuotient_Star(benchmark::State& state) { run_features(state, star_case(static_cast<int>(state.range(0)))); }

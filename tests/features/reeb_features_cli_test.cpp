@@ -38,5 +38,40 @@ TEST(ReebFeaturesCli, GeodesicMethodIsAnOption) {
   EXPECT_NE(bad_out.find("unknown geodesic method 'heat' (expected dijkstra or fmm)"), std::string::npos) << bad_out;
 }
 
+TEST(ReebFeaturesCli, MinPersistenceIsAnOption) {
+  const TempDir dir;
+  const std::string reeb = REEB_BINARY;
+  const std::filesystem::path cow = embedded_dataset_dir() / "cow.off";
+  // 0, the default, is the paper's rule; 5 % of the diameter keeps only the
+  // cow's long extremities (fewer than the 14 of every local extremum).
+  const auto [status, out] = run_command(reeb + " features " + shell_quoted(cow) + " --min-persistence 0.05 -o " +
+                                         shell_quoted(dir / "f.json") + " 2>&1");
+  ASSERT_EQ(status, 0) << out;
+  EXPECT_NE(out.find("6 feature points"), std::string::npos) << out;
+  EXPECT_NE(read_text(dir / "f.json").find("\"min_persistence\": 0.05"), std::string::npos);
+  const auto [plain, plain_out] = run_command(reeb + " features " + shell_quoted(cow) + " -o " +
+                                              shell_quoted(dir / "g.json") + " 2>&1");
+  ASSERT_EQ(plain, 0) << plain_out;
+  EXPECT_NE(plain_out.find("14 feature points"), std::string::npos) << plain_out;
+  EXPECT_NE(read_text(dir / "g.json").find("\"min_persistence\": 0"), std::string::npos);
+
+  const auto [graphed, graph_out] = run_command(reeb + " graph " + shell_quoted(embedded_dataset_dir() / "eight.off") +
+                                                " -o " + shell_quoted(dir / "g.json") + " --min-persistence 0.02 2>&1");
+  ASSERT_EQ(graphed, 0) << graph_out;
+  EXPECT_NE(graph_out.find("2 cycles"), std::string::npos) << graph_out;  // genus 2
+
+  // reeb index records it with the collection's analysis options.
+  const auto [indexed, index_out] = run_command(reeb + " index " + shell_quoted(cow) + " -o " +
+                                                shell_quoted(dir / "c.h5") + " --threads 1 --min-persistence 0.02 2>&1");
+  ASSERT_EQ(indexed, 0) << index_out;
+  const auto [info_status, info] = run_command(reeb + " info " + shell_quoted(dir / "c.h5"));
+  ASSERT_EQ(info_status, 0) << info;
+  EXPECT_NE(info.find("\"min_persistence\": 0.02"), std::string::npos) << info;
+
+  const auto [bad, bad_out] = run_command(reeb + " features " + shell_quoted(cow) + " --min-persistence -1 2>&1");
+  EXPECT_EQ(bad, 1);
+  EXPECT_NE(bad_out.find("min_persistence must lie in [0, 1]"), std::string::npos) << bad_out;
+}
+
 }  // namespace
 }  // namespace reebkit::test

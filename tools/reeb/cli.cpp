@@ -30,6 +30,13 @@ void add_geodesic_option(po::options_description& options, Geodesic& method) {
                         "triangles, less sensitive to the sampling)");
 }
 
+void add_min_persistence_option(po::options_description& options, double& min_persistence) {
+  options.add_options()("min-persistence", po::value(&min_persistence)->default_value(min_persistence),
+                        "drop the extrema of f1 and f2 whose topological persistence is below this fraction of "
+                        "the geodesic diameter before the relaxed intersection (0: every local extremum, as the "
+                        "paper)");
+}
+
 LoadedMesh load_for_command(const std::string& path, bool all_components) {
   Timer timer;
   CleanupOptions cleanup;

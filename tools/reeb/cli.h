@@ -35,6 +35,10 @@ bool parse(const std::vector<std::string>& args, const std::string& usage,
 /// the default) once the options are parsed.
 void add_geodesic_option(po::options_description& options, Geodesic& method);
 
+/// Adds --min-persistence X, FeatureOptions::min_persistence (its current
+/// value is the default).
+void add_min_persistence_option(po::options_description& options, double& min_persistence);
+
 /// A mesh read and cleaned for a subcommand, and the time that took.
 struct LoadedMesh {
   CleanedMesh cleaned;

@@ -41,6 +41,7 @@ void write_json(const std::string& path, const std::string& mesh_path, const Fea
       .field("mesh", mesh_path)
       .field("epsilon", options.epsilon)
       .field("geodesic", geodesic_name(options.geodesic))
+      .field("min_persistence", options.min_persistence)
       .field("load_ms", load_ms);
   json.key("components").begin_array();
   for (const MeshAnalysis& r : results) {
@@ -112,11 +113,12 @@ int run_features(const std::vector<std::string>& args) {
       ("all-components", po::bool_switch(&all_components),
        "process every connected component (default: the largest only)");
   add_geodesic_option(options, feature_options.geodesic);
+  add_min_persistence_option(options, feature_options.min_persistence);
   po::positional_options_description positional;
   positional.add("mesh", 1);
   po::variables_map vm;
-  if (!parse(args, "reeb features MESH [-o features.json] [--ply fq.ply] [--geodesic dijkstra|fmm]", options, positional,
-             vm))
+  if (!parse(args, "reeb features MESH [-o features.json] [--ply fq.ply] [--geodesic dijkstra|fmm] [--min-persistence X]",
+             options, positional, vm))
     return 0;
 
   LoadedMesh loaded = load_for_command(mesh_path, all_components);

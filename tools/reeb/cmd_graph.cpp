@@ -78,12 +78,13 @@ int run_graph(const std::vector<std::string>& args) {
       ("all-components", po::bool_switch(&all_components),
        "process every connected component (default: the largest only)");
   add_geodesic_option(options, analysis.features.geodesic);
+  add_min_persistence_option(options, analysis.features.min_persistence);
   po::positional_options_description positional;
   positional.add("mesh", 1);
   po::variables_map vm;
   if (!parse(args,
              "reeb graph MESH -o graph.json [--ply segmentation.ply] [--obj skeleton.obj] [--png figure.png] "
-             "[--epsilon E] [--geodesic dijkstra|fmm] [--all-components]",
+             "[--epsilon E] [--geodesic dijkstra|fmm] [--min-persistence X] [--all-components]",
              options, positional, vm))
     return 0;
 

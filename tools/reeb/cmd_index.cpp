@@ -26,11 +26,12 @@ int run_index(const std::vector<std::string>& args) {
       ("epsilon", po::value(&extraction.analysis.features.epsilon)->default_value(extraction.analysis.features.epsilon),
        "relaxation radius of the extrema intersection (fraction of the geodesic diameter)");
   add_geodesic_option(options, extraction.analysis.features.geodesic);
+  add_min_persistence_option(options, extraction.analysis.features.min_persistence);
   po::positional_options_description positional;
   positional.add("input", -1);
   po::variables_map vm;
   if (!parse(args, "reeb index INPUT... -o collection.h5 [--classes FILE.cla] [--threads N] [--resume] [--epsilon E] "
-             "[--geodesic dijkstra|fmm]",
+             "[--geodesic dijkstra|fmm] [--min-persistence X]",
              options, positional, vm))
     return 0;
 

@@ -181,6 +181,7 @@ std::string analysis_options_json(const AnalysisOptions& options) {
       .field("max_extra_sweeps", options.features.max_extra_sweeps)
       .field("extra_seeds", options.features.extra_seeds)
       .field("geodesic", geodesic_name(options.features.geodesic))
+      .field("min_persistence", options.features.min_persistence)
       .end_object();
   json.key("reeb")
       .begin_object()

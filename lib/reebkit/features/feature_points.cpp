@@ -2,6 +2,7 @@
 
 #include "reebkit/core/error.h"
 #include "reebkit/features/critical_points.h"
+#include "reebkit/features/persistence.h"
 
 #include <algorithm>
 #include <limits>
@@ -68,6 +69,9 @@ FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOption
                           " out of range [0, " + std::to_string(n) + ")");
   if (!(options.epsilon > 0.0 && options.epsilon <= 1.0))
     throw InvalidArgument("extract_feature_points: epsilon must lie in (0, 1], got " + std::to_string(options.epsilon));
+  if (!(options.min_persistence >= 0.0 && options.min_persistence <= 1.0))
+    throw InvalidArgument("extract_feature_points: min_persistence must lie in [0, 1], got " +
+                          std::to_string(options.min_persistence));
 
   FeaturePoints out;
   const std::unique_ptr<GeodesicSolver> geodesic = make_geodesic_solver(graph, options.geodesic);
@@ -103,9 +107,14 @@ FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOption
   out.source2 = s2;
   out.diameter = f1[static_cast<std::size_t>(s2)];
 
-  // Eq. (5): E1, E2 are the local extrema (figure 3 classification).
-  out.extrema1 = local_extrema(graph, f1);
-  out.extrema2 = local_extrema(graph, f2);
+  // Eq. (5): E1, E2 are the local extrema (figure 3 classification), those
+  // that persist at least min_persistence x diameter when it is set.
+  const auto extrema = [&](const std::vector<double>& f) {
+    return options.min_persistence > 0.0 ? persistent_extrema(graph, f, options.min_persistence * out.diameter)
+                                         : local_extrema(graph, f);
+  };
+  out.extrema1 = extrema(f1);
+  out.extrema2 = extrema(f2);
 
   // Eq. (6): v belongs to F when an extremum of f1 and one of f2 lie within
   // epsilon of it, and no feature point already taken lies within epsilon.

@@ -33,6 +33,15 @@ struct FeatureOptions {
   /// extrema on a resampled mesh; FastMarching crosses triangles and
   /// converges to the surface's distance (results/sampling_stability.md).
   Geodesic geodesic = Geodesic::Dijkstra;
+  /// Extrema of f1 and f2 whose topological persistence (features/
+  /// persistence.h: how far f must change around one before it merges into a
+  /// more extreme one) is below min_persistence x diameter are dropped from
+  /// E1 and E2 before the relaxed intersection. 0 = the paper's rule, every
+  /// local extremum. Meant against the shallow extrema that a resampling
+  /// adds along the ridges where two geodesic fronts meet
+  /// (results/sampling_stability.md); a limb shorter than the threshold is
+  /// dropped with them. In [0, 1].
+  double min_persistence = 0.0;
 };
 
 struct FeaturePoints {
@@ -44,8 +53,10 @@ struct FeaturePoints {
   /// Geodesic distance d(v_s1, v_s2) = max f1, the approximate geodesic
   /// diameter: every normalized distance delta of the paper is d / diameter.
   double diameter = 0.0;
-  std::vector<Index> extrema1;  ///< E1: local minima and maxima of f1
-  std::vector<Index> extrema2;  ///< E2: local minima and maxima of f2
+  /// E1: local minima and maxima of f1 (with persistence >= min_persistence x diameter)
+  std::vector<Index> extrema1;
+  /// E2: local minima and maxima of f2 (with persistence >= min_persistence x diameter)
+  std::vector<Index> extrema2;
   int sweeps = 0;               ///< full geodesic passes spent finding v_s1, v_s2
 };
 
