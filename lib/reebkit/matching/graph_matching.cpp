@@ -5,6 +5,7 @@
 #include "reebkit/matching/edge_consistency.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -19,21 +20,33 @@ void require_ok(const CollectionEntry& entry) {
   if (!entry.ok) throw InvalidArgument("match_graphs: entry '" + entry.name + "' has no graph (" + entry.error + ")");
 }
 
-/// a(i, j) + s(i, j) of the cost model, weighted (MatchingOptions).
-double node_dissimilarity(const double* x, const double* y, const MatchingOptions& o) {
-  const double attributes = (std::abs(x[F::kSqrtArea] - y[F::kSqrtArea]) + std::abs(x[F::kFqMin] - y[F::kFqMin]) +
-                             std::abs(x[F::kFqMax] - y[F::kFqMax]) + std::abs(x[F::kExtent] - y[F::kExtent]) +
-                             std::abs(x[F::kRadius] - y[F::kRadius])) / 5.0;
+/// The weights of the node cost, per feature column (NodeCost::l1 for the
+/// L1 block), from MatchingOptions once per match.
+struct NodeCost {
+  std::array<double, F::kL1Block> l1{};  // zero on the padding
+  double structure = 0.0;                // weight of each of degree, start type, end type
+  explicit NodeCost(const MatchingOptions& o) {
+    for (const int k : {F::kSqrtArea, F::kFqMin, F::kFqMax, F::kExtent, F::kRadius}) l1[at(k)] = o.attribute_weight / 5.0;
+    l1[F::kSqrtNeighbourArea] = o.structure_weight / 4.0;
+    for (int k = 0; k < kRadiusProfileLevels; ++k) l1[at(F::kProfile + k)] = o.profile_weight / kRadiusProfileLevels;
+    for (int k = 0; k < kShapeBins; ++k) l1[at(F::kShape + k)] = o.shape_weight / 2.0;
+    structure = o.structure_weight / 4.0;
+  }
+  static std::size_t at(int k) { return static_cast<std::size_t>(k); }
+};
+
+/// a(i, j) + s(i, j) + p(i, j) + h(i, j) of the cost model, weighted: the
+/// L1 block in four independent sums (a fixed order; the compiler may run
+/// them side by side), then the degree and type terms of s.
+double node_dissimilarity(const double* x, const double* y, const NodeCost& c) {
+  double sum[4] = {0.0, 0.0, 0.0, 0.0};
+  for (int k = 0; k < F::kL1Block; k += 4)
+    for (int l = 0; l < 4; ++l) sum[l] += c.l1[NodeCost::at(k + l)] * std::abs(x[k + l] - y[k + l]);
   const double max_degree = std::max({x[F::kDegree], y[F::kDegree], 1.0});
-  const double structure = (std::abs(x[F::kDegree] - y[F::kDegree]) / max_degree +
-                            (x[F::kStartType] != y[F::kStartType] ? 1.0 : 0.0) +
-                            (x[F::kEndType] != y[F::kEndType] ? 1.0 : 0.0) +
-                            std::abs(x[F::kSqrtNeighbourArea] - y[F::kSqrtNeighbourArea])) / 4.0;
-  double profile = 0.0, shape = 0.0;
-  for (int k = 0; k < kRadiusProfileLevels; ++k) profile += std::abs(x[F::kProfile + k] - y[F::kProfile + k]);
-  for (int k = 0; k < kShapeBins; ++k) shape += std::abs(x[F::kShape + k] - y[F::kShape + k]);
-  return o.attribute_weight * attributes + o.structure_weight * structure +
-         o.profile_weight * profile / kRadiusProfileLevels + o.shape_weight * shape / 2.0;
+  const double structure = std::abs(x[F::kDegree] - y[F::kDegree]) / max_degree +
+                           (x[F::kStartType] != y[F::kStartType] ? 1.0 : 0.0) +
+                           (x[F::kEndType] != y[F::kEndType] ? 1.0 : 0.0);
+  return ((sum[0] + sum[1]) + (sum[2] + sum[3])) + c.structure * structure;
 }
 
 /// w_i of the cost model.
@@ -90,10 +103,11 @@ double match_rows(const MatchableGraph& a, const MatchableGraph& b, const Matchi
   for (std::size_t j = 0; j < um; ++j) total_weight += weight(b, j);
 
   w.dissimilarity.resize(un * um);
+  const NodeCost node_cost(o);
   for (std::size_t i = 0; i < un; ++i) {
     const double* x = &a.features[i * MatchableGraph::kFeatureCount];
     for (std::size_t j = 0; j < um; ++j)
-      w.dissimilarity[i * um + j] = node_dissimilarity(x, &b.features[j * MatchableGraph::kFeatureCount], o);
+      w.dissimilarity[i * um + j] = node_dissimilarity(x, &b.features[j * MatchableGraph::kFeatureCount], node_cost);
   }
   w.cost.resize(un * um);
   w.forward.assign(un, -1);
@@ -275,13 +289,14 @@ double match_lower_bound(const MatchableGraph& a, const MatchableGraph& b, const
     magnitude += std::abs(insert[j]);
   }
   const double least_edge_term = std::min(0.0, o.edge_weight);
+  const NodeCost node_cost(o);
   for (std::size_t i = 0; i < un; ++i) {
     const double wi = node_weight(a, i, o), del = unmatched_node_cost(wi, o);
     const double* x = &a.features[i * MatchableGraph::kFeatureCount];
     double row_best = del;
     for (std::size_t j = 0; j < um; ++j) {
       const double p = pair_cost(wi, node_weight(b, j, o),
-                                 node_dissimilarity(x, &b.features[j * MatchableGraph::kFeatureCount], o) +
+                                 node_dissimilarity(x, &b.features[j * MatchableGraph::kFeatureCount], node_cost) +
                                      least_edge_term);
       row_best = std::min(row_best, p - insert[j]);
       column_best[j] = std::min(column_best[j], p - del);

@@ -58,9 +58,12 @@ struct GraphMatch {
 
 /// The per-node arrays the matcher reads, computed once per graph.
 struct MatchableGraph {
-  /// Columns of `features`, all in [0, ~1].
-  enum Feature : int { kSqrtArea, kFqMin, kFqMax, kExtent, kRadius, kSqrtNeighbourArea, kDegree, kStartType, kEndType,
-                       kProfile, kShape = kProfile + kRadiusProfileLevels, kFeatureCount = kShape + kShapeBins };
+  /// Columns of `features`, all in [0, ~1]. The first kL1Block columns
+  /// (zero-padded to a multiple of 4) enter the node cost as a weighted L1
+  /// distance; degree and types follow.
+  enum Feature : int { kSqrtArea, kFqMin, kFqMax, kExtent, kRadius, kSqrtNeighbourArea, kProfile,
+                       kShape = kProfile + kRadiusProfileLevels, kL1End = kShape + kShapeBins,
+                       kL1Block = (kL1End + 3) / 4 * 4, kDegree = kL1Block, kStartType, kEndType, kFeatureCount };
   std::int32_t num_nodes = 0;
   std::vector<double> features;           ///< num_nodes x kFeatureCount, row-major
   std::vector<double> relative_area;      ///< per node
