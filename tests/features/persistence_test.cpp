@@ -180,6 +180,27 @@ TEST(Persistence, MatchesTheBruteForceOracle) {
   });
 }
 
+TEST(Persistence, PersistentExtremaAreThoseThatPassTheThreshold) {
+  // persistent_extrema searches from each extremum instead of pairing them
+  // all: the same set as filtering extrema_persistence, at every threshold,
+  // including the persistence values themselves (>= is inclusive).
+  for_each_case([](const std::string& what, const Mesh&, const MeshGraph& graph, const std::vector<double>& f) {
+    const ExtremaPersistence p = extrema_persistence(graph, f);
+    std::vector<double> thresholds = {0.0, 1e-9, 0.01, 0.05, 0.2, 1.0, kInf};
+    for (const auto* pairs : {&p.maxima, &p.minima})
+      for (const PersistencePair& e : *pairs) thresholds.push_back(e.persistence);
+    for (const double t : thresholds) {
+      std::vector<Index> want;
+      for (const auto* pairs : {&p.maxima, &p.minima})
+        for (const PersistencePair& e : *pairs)
+          if (e.persistence >= t) want.push_back(e.extremum);
+      std::sort(want.begin(), want.end());
+      want.erase(std::unique(want.begin(), want.end()), want.end());
+      ASSERT_EQ(persistent_extrema(graph, f, t), want) << what << ", threshold " << t;
+    }
+  });
+}
+
 TEST(Persistence, ExtremaAreThoseOfTheLinkClassification) {
   for_each_case([](const std::string& what, const Mesh&, const MeshGraph& graph, const std::vector<double>& f) {
     const ExtremaPersistence p = extrema_persistence(graph, f);
@@ -335,6 +356,7 @@ TEST(Persistence, InvariantToSimilarityTransforms) {
 TEST(Persistence, RejectsBadInput) {
   const MeshGraph graph = build_mesh_graph(make_cube());
   EXPECT_THROW(extrema_persistence(graph, std::vector<double>(7, 0.0)), InvalidArgument);
+  EXPECT_THROW(persistent_extrema(graph, std::vector<double>(7, 0.0), 0.1), InvalidArgument);
   EXPECT_THROW(persistent_extrema(graph, std::vector<double>(8, 0.0), -0.1), InvalidArgument);
   EXPECT_THROW(persistent_extrema(graph, std::vector<double>(8, 0.0), std::nan("")), InvalidArgument);
   // Constant f: ties broken by id, so vertex 7 is the one maximum, 0 the one minimum.

@@ -1,6 +1,7 @@
 #include "reebkit/features/persistence.h"
 
 #include "reebkit/core/error.h"
+#include "reebkit/features/critical_points.h"
 
 #include <algorithm>
 #include <string>
@@ -80,13 +81,50 @@ ExtremaPersistence extrema_persistence(const MeshGraph& graph, const std::vector
 std::vector<Index> persistent_extrema(const MeshGraph& graph, const std::vector<double>& f, double min_persistence) {
   if (!(min_persistence >= 0.0))
     throw InvalidArgument("persistent_extrema: min_persistence must be >= 0, got " + std::to_string(min_persistence));
-  const ExtremaPersistence p = extrema_persistence(graph, f);
+  const Index n = graph.num_vertices();
+  if (static_cast<Index>(f.size()) != n)
+    throw InvalidArgument("persistent_extrema: f has " + std::to_string(f.size()) + " values for " +
+                          std::to_string(n) + " vertices");
+  // No sort of the whole mesh: an extremum e persists less than the threshold
+  // exactly when a vertex beyond it (sos order) can be reached from it
+  // through vertices w with |f(e) - f(w)| < min_persistence (the path's
+  // lowest vertex is then above e's saddle, and the other way round). A
+  // best-first search from e (most extreme first) answers that; it visits
+  // only the component of e above its saddle or the band below e, which is
+  // small for all but a few extrema. Same answers as extrema_persistence
+  // (tested), at a fraction of its cost.
+  std::vector<Index> mark(static_cast<std::size_t>(n), kInvalidIndex);  // search that reached a vertex
+  std::vector<Index> heap;
+  const auto at = [&f](Index v) { return f[static_cast<std::size_t>(v)]; };
+  const auto persists = [&](Index e, int sign, Index search) {
+    const auto beyond = [&](Index a, Index b) { return sign > 0 ? sos_less(f, b, a) : sos_less(f, a, b); };
+    const auto heap_order = [&](Index a, Index b) { return beyond(b, a); };  // most extreme on top
+    heap.assign(1, e);
+    mark[static_cast<std::size_t>(e)] = search;
+    while (!heap.empty()) {
+      std::pop_heap(heap.begin(), heap.end(), heap_order);
+      const Index v = heap.back();
+      heap.pop_back();
+      for (Index i = graph.offset[static_cast<std::size_t>(v)]; i < graph.offset[static_cast<std::size_t>(v) + 1]; ++i) {
+        const Index w = graph.neighbor[static_cast<std::size_t>(i)];
+        if (mark[static_cast<std::size_t>(w)] == search || !(sign * (at(e) - at(w)) < min_persistence)) continue;
+        if (beyond(w, e)) return false;
+        mark[static_cast<std::size_t>(w)] = search;
+        heap.push_back(w);
+        std::push_heap(heap.begin(), heap.end(), heap_order);
+      }
+    }
+    return true;
+  };
   std::vector<Index> out;
-  for (const auto* pairs : {&p.maxima, &p.minima})
-    for (const PersistencePair& e : *pairs)
-      if (e.persistence >= min_persistence) out.push_back(e.extremum);
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());  // an isolated vertex is both
+  Index search = 0;
+  for (const Index e : local_extrema(graph, f)) {
+    bool any_above = false, any_below = false;
+    for (Index i = graph.offset[static_cast<std::size_t>(e)]; i < graph.offset[static_cast<std::size_t>(e) + 1]; ++i)
+      (sos_less(f, graph.neighbor[static_cast<std::size_t>(i)], e) ? any_below : any_above) = true;
+    const bool kept = (!any_above && persists(e, +1, search++)) || (!any_below && persists(e, -1, search++));
+    if (kept) out.push_back(e);
+  }
   return out;
 }
 

@@ -45,9 +45,13 @@ struct ExtremaPersistence {
 ExtremaPersistence extrema_persistence(const MeshGraph& graph, const std::vector<double>& f);
 
 /// The local minima and maxima of f with persistence >= min_persistence (in
-/// f's units), vertex ids increasing. With min_persistence = 0 this is
+/// f's units), vertex ids increasing: the extrema of extrema_persistence
+/// that pass, found without sorting the mesh (a best-first search from each
+/// extremum through the vertices within min_persistence of it, stopped at the
+/// first vertex beyond it). With min_persistence = 0 this is
 /// local_extrema(graph, f).
-/// \pre min_persistence >= 0 (not NaN); throws InvalidArgument otherwise.
+/// \pre min_persistence >= 0 (not NaN) and f.size() == graph.num_vertices();
+///      throws InvalidArgument otherwise.
 std::vector<Index> persistent_extrema(const MeshGraph& graph, const std::vector<double>& f, double min_persistence);
 
 }  // namespace reebkit
