@@ -67,7 +67,7 @@ INSTANTIATE_TEST_SUITE_P(Counts, StarArms, ::testing::Values(2, 3, 4, 5, 6, 8, 1
 // copies the tip maxima of f1 and f2 can lie more than epsilon apart; a
 // shallow extremum between them then made the tip's feature point, and the
 // filter loses it: 15 of 16 arms on one copy, results/sampling_stability.md.)
-// The default, 0, is the paper's rule: every local extremum of f1 and f2.
+// With 0, the paper's rule, E1 and E2 are every local extremum of f1 and f2.
 TEST(FeaturePoints, PersistentExtremaKeepOneFeaturePointPerArmTip) {
   for (const int arms : {2, 3, 4, 5, 6, 8, 10, 12, 16})
     for (const Geodesic method : {Geodesic::Dijkstra, Geodesic::FastMarching})
@@ -76,6 +76,7 @@ TEST(FeaturePoints, PersistentExtremaKeepOneFeaturePointPerArmTip) {
         const MeshGraph g = build_mesh_graph(seed == 0 ? base : resample_mesh(base, ResamplingOptions{0.2, seed}));
         FeatureOptions options;
         options.geodesic = method;
+        options.min_persistence = 0.0;
         const FeaturePoints all = extract_feature_points(g, options);
         EXPECT_EQ(all.extrema1, local_extrema(g, geodesic_distances(g, {all.source1}, method).distance)) << arms;
         options.min_persistence = 0.05;

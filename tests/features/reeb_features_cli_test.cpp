@@ -25,7 +25,8 @@ TEST(ReebFeaturesCli, GeodesicMethodIsAnOption) {
     const auto [status, out] = run_command(reeb + " features " + shell_quoted(cow) + " --geodesic " + method + " -o " +
                                            shell_quoted(dir / "f.json") + " 2>&1");
     ASSERT_EQ(status, 0) << out;
-    EXPECT_NE(out.find("14 feature points"), std::string::npos) << method << ": " << out;  // hooves, horns, ears, ...
+    // Hooves, horns, ears, tail, muzzle (default --min-persistence 0.01: the teats persist less).
+    EXPECT_NE(out.find("10 feature points"), std::string::npos) << method << ": " << out;
     EXPECT_NE(read_text(dir / "f.json").find("\"geodesic\": \"" + method + "\""), std::string::npos) << method;
   }
   const auto [graphed, graph_out] = run_command(reeb + " graph " + shell_quoted(embedded_dataset_dir() / "eight.off") +
@@ -42,8 +43,8 @@ TEST(ReebFeaturesCli, MinPersistenceIsAnOption) {
   const TempDir dir;
   const std::string reeb = REEB_BINARY;
   const std::filesystem::path cow = embedded_dataset_dir() / "cow.off";
-  // 0, the default, is the paper's rule; 5 % of the diameter keeps only the
-  // cow's long extremities (fewer than the 14 of every local extremum).
+  // 5 % of the diameter keeps only the cow's long extremities; 0.01, the
+  // default, 10; 0, the paper's rule, 14 (the teats too).
   const auto [status, out] = run_command(reeb + " features " + shell_quoted(cow) + " --min-persistence 0.05 -o " +
                                          shell_quoted(dir / "f.json") + " 2>&1");
   ASSERT_EQ(status, 0) << out;
@@ -52,8 +53,13 @@ TEST(ReebFeaturesCli, MinPersistenceIsAnOption) {
   const auto [plain, plain_out] = run_command(reeb + " features " + shell_quoted(cow) + " -o " +
                                               shell_quoted(dir / "g.json") + " 2>&1");
   ASSERT_EQ(plain, 0) << plain_out;
-  EXPECT_NE(plain_out.find("14 feature points"), std::string::npos) << plain_out;
-  EXPECT_NE(read_text(dir / "g.json").find("\"min_persistence\": 0"), std::string::npos);
+  EXPECT_NE(plain_out.find("10 feature points"), std::string::npos) << plain_out;
+  EXPECT_NE(read_text(dir / "g.json").find("\"min_persistence\": 0.01"), std::string::npos);
+  const auto [paper, paper_out] =
+      run_command(reeb + " features " + shell_quoted(cow) + " --min-persistence 0 -o " + shell_quoted(dir / "p.json") + " 2>&1");
+  ASSERT_EQ(paper, 0) << paper_out;
+  EXPECT_NE(paper_out.find("14 feature points"), std::string::npos) << paper_out;
+  EXPECT_NE(read_text(dir / "p.json").find("\"min_persistence\": 0,"), std::string::npos);
 
   const auto [graphed, graph_out] = run_command(reeb + " graph " + shell_quoted(embedded_dataset_dir() / "eight.off") +
                                                 " -o " + shell_quoted(dir / "g.json") + " --min-persistence 0.02 2>&1");

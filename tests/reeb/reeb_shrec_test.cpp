@@ -33,11 +33,14 @@ TEST(ReebShrec, CyclesEqualGenusAndLeavesEndAtFeaturePoints) {
   // around the handle stay within one edge of each other from split to merge,
   // so Definition 6 (connected sets of candidate vertices) sees one line and
   // no cycle forms. Any other mesh must have exactly genus-many cycles.
-  const std::set<std::string> lost_cycle = {"5.off", "133.off", "163.off"};
+  // (133.off lost its cycle too with every local extremum as a feature
+  // point, FeatureOptions::min_persistence = 0.)
+  const std::set<std::string> lost_cycle = {"5.off", "163.off"};
   // Leaves with no feature point: pockets of 1-2 vertices that the
-  // propagation front closes around (measured: 3, 258, 284 twice).
+  // propagation front closes around (measured: 284 twice, 287, 290 twice;
+  // 3, 258, 284 twice with min_persistence = 0).
   const std::size_t max_pocket_vertices = 2;
-  const int max_pockets = 4;
+  const int max_pockets = 5;
 
   int pockets = 0;
   std::ostringstream failures;
@@ -60,6 +63,7 @@ TEST(ReebShrec, CyclesEqualGenusAndLeavesEndAtFeaturePoints) {
       const ReebNode& node = a.reeb.nodes[n];
       if (node.end != NodeType::Termination || holds_feature[n]) continue;
       ++pockets;
+      std::cout << "[ pocket ] " << file << " leaf " << n << ", " << node.vertex_count << " vertices\n";
       EXPECT_LE(static_cast<std::size_t>(node.vertex_count), max_pocket_vertices)
           << file << ": leaf " << n << " without a feature point has " << node.vertex_count << " vertices";
     }

@@ -36,12 +36,15 @@ struct FeatureOptions {
   /// Extrema of f1 and f2 whose topological persistence (features/
   /// persistence.h: how far f must change around one before it merges into a
   /// more extreme one) is below min_persistence x diameter are dropped from
-  /// E1 and E2 before the relaxed intersection. 0 = the paper's rule, every
-  /// local extremum. Meant against the shallow extrema that a resampling
-  /// adds along the ridges where two geodesic fronts meet
-  /// (results/sampling_stability.md); a limb shorter than the threshold is
-  /// dropped with them. In [0, 1].
-  double min_persistence = 0.0;
+  /// E1 and E2 before the relaxed intersection; 0 = the paper's rule, every
+  /// local extremum. Against the shallow extrema that a resampling adds
+  /// along the ridges where two geodesic fronts meet; a protrusion shorter
+  /// than the threshold (fingers, claws) is dropped with them. 0.01 (measured
+  /// in results/sampling_stability.md against 0, 0.02, 0.05): resampled
+  /// copies keep the feature count 179 times in 216 instead of 51, SHREC07
+  /// retrieval FT 0.604 instead of 0.564, features + f_q at 100k faces 32.1
+  /// ms instead of 30.5. In [0, 1].
+  double min_persistence = 0.01;
 };
 
 struct FeaturePoints {
