@@ -98,6 +98,30 @@ Vec3 crossing(const Mesh& mesh, const std::vector<double>& f, Index i, Index j, 
   return point(mesh, i) + t * (point(mesh, j) - point(mesh, i));
 }
 
+/// The regions of a triangle's vertices (`label`), each once, with its share
+/// of the triangle (its vertices / 3, as ReebNode::area splits areas):
+/// visit(node, share).
+template <class Visit>
+void for_each_region(const std::array<Index, 3>& label, Visit&& visit) {
+  for (int i = 0; i < 3; ++i) {
+    const Index node = label[at(i)];
+    if ((i > 0 && node == label[0]) || (i > 1 && node == label[1])) continue;  // counted already
+    visit(node, static_cast<double>(std::count(label.begin(), label.end(), node)) / 3.0);
+  }
+}
+
+/// The regions of triangle t's vertices.
+std::array<Index, 3> triangle_labels(const Mesh& mesh, const ReebGraph& reeb, Index t) {
+  return {reeb.vertex_node[at(mesh.triangles(t, 0))], reeb.vertex_node[at(mesh.triangles(t, 1))],
+          reeb.vertex_node[at(mesh.triangles(t, 2))]};
+}
+
+/// Whether triangle t is part of the surface as read (not a fan hole filling added).
+bool is_original(const Mesh& mesh, Index t, Index original_vertices) {
+  return mesh.triangles(t, 0) < original_vertices && mesh.triangles(t, 1) < original_vertices &&
+         mesh.triangles(t, 2) < original_vertices;
+}
+
 /// Geodesic extent of every region (see the file comment), unnormalized.
 std::vector<double> geodesic_extents(const MeshGraph& graph, const std::vector<double>& f, const ReebGraph& reeb) {
   const Index n = graph.num_vertices();
@@ -166,9 +190,8 @@ TriangleSums triangle_sums(const Mesh& mesh, Index original_vertices, const std:
   };
   for (Index t = 0; t < mesh.num_triangles(); ++t) {
     const std::array<Index, 3> v = {mesh.triangles(t, 0), mesh.triangles(t, 1), mesh.triangles(t, 2)};
-    const std::array<Index, 3> label = {reeb.vertex_node[at(v[0])], reeb.vertex_node[at(v[1])],
-                                        reeb.vertex_node[at(v[2])]};
-    if (v[0] < original_vertices && v[1] < original_vertices && v[2] < original_vertices) {  // not a hole fan
+    const std::array<Index, 3> label = triangle_labels(mesh, reeb, t);
+    if (is_original(mesh, t, original_vertices)) {
       const double area = triangle_area(mesh, t);
       sums.total_area += area;
       for (const Index node : label) sums.node_area[at(node)] += area / 3.0;
@@ -177,13 +200,10 @@ TriangleSums triangle_sums(const Mesh& mesh, Index original_vertices, const std:
     const double hi = std::max({f[at(v[0])], f[at(v[1])], f[at(v[2])]});
 
     // Level lines: each region present in the triangle, at its levels in [lo, hi).
-    for (int i = 0; i < 3; ++i) {
-      const Index node = label[at(i)];
-      if ((i > 0 && node == label[0]) || (i > 1 && node == label[1])) continue;  // counted already
+    for_each_region(label, [&](Index node, double share) {
       const ReebNode& region = reeb.nodes[at(node)];
       const double step = (region.fq_max - region.fq_min) / kLevels;
-      if (!(step > 0.0) || hi <= lo) continue;
-      const double share = static_cast<double>(std::count(label.begin(), label.end(), node)) / 3.0;
+      if (!(step > 0.0) || hi <= lo) return;
       const int k_lo = std::max(0, static_cast<int>(std::floor((lo - region.fq_min) / step - 0.5)));
       const int k_hi = std::min(kLevels - 1, static_cast<int>(std::ceil((hi - region.fq_min) / step - 0.5)));
       for (int k = k_lo; k <= k_hi; ++k) {
@@ -196,7 +216,7 @@ TriangleSums triangle_sums(const Mesh& mesh, Index original_vertices, const std:
         sums.level_length[at(node) * kLevels + static_cast<std::size_t>(k)] +=
             share * (crossing(mesh, f, a, b, c) - crossing(mesh, f, a, d, c)).norm();
       }
-    }
+    });
 
     // Borders: midpoint segments between the regions of the triangle.
     if (label[0] == label[1] && label[1] == label[2]) continue;
@@ -271,33 +291,24 @@ std::vector<double> shape_histograms(const Mesh& mesh, Index original_vertices, 
   // weights, grouped by region; the surface as read only.
   const std::size_t nodes = reeb.nodes.size();
   std::vector<std::size_t> first(nodes + 1, 0);
-  const auto regions = [&](Index t, auto&& visit) {
-    const std::array<Index, 3> label = {reeb.vertex_node[at(mesh.triangles(t, 0))],
-                                        reeb.vertex_node[at(mesh.triangles(t, 1))],
-                                        reeb.vertex_node[at(mesh.triangles(t, 2))]};
-    for (int i = 0; i < 3; ++i)
-      if ((i == 0 || label[at(i)] != label[0]) && (i < 2 || label[2] != label[1]))
-        visit(label[at(i)], static_cast<double>(std::count(label.begin(), label.end(), label[at(i)])) / 3.0);
-  };
   std::vector<Index> original;
   for (Index t = 0; t < mesh.num_triangles(); ++t)
-    if (mesh.triangles(t, 0) < original_vertices && mesh.triangles(t, 1) < original_vertices &&
-        mesh.triangles(t, 2) < original_vertices)
-      original.push_back(t);
+    if (is_original(mesh, t, original_vertices)) original.push_back(t);
   std::vector<double> whole(original.size());
   for (std::size_t k = 0; k < original.size(); ++k)
     whole[k] = (k ? whole[k - 1] : 0.0) + triangle_area(mesh, original[k]);
   shape_distribution(mesh, {original.data(), whole.data(), original.size()}, kGlobalShapeSamples, kGlobalShapeBinWidth,
                      2006, global, kGlobalShapeBins);
 
-  for (const Index t : original) regions(t, [&](Index node, double) { ++first[at(node) + 1]; });
+  for (const Index t : original)
+    for_each_region(triangle_labels(mesh, reeb, t), [&](Index node, double) { ++first[at(node) + 1]; });
   for (std::size_t k = 1; k <= nodes; ++k) first[k] += first[k - 1];
   std::vector<Index> triangle(first[nodes]);
   std::vector<double> cumulative(first[nodes]);
   std::vector<std::size_t> fill(first.begin(), first.end() - 1);
   std::vector<double> total(nodes, 0.0);
   for (const Index t : original)
-    regions(t, [&](Index node, double share) {
+    for_each_region(triangle_labels(mesh, reeb, t), [&](Index node, double share) {
       total[at(node)] += share * triangle_area(mesh, t);
       triangle[fill[at(node)]] = t;
       cumulative[fill[at(node)]++] = total[at(node)];
