@@ -236,6 +236,13 @@ MatchableGraph make_matchable_graph(const CollectionEntry& entry) {
   return g;
 }
 
+std::vector<MatchableGraph> make_matchable_graphs(const std::vector<CollectionEntry>& entries) {
+  std::vector<MatchableGraph> graphs;
+  graphs.reserve(entries.size());
+  for (const CollectionEntry& e : entries) graphs.push_back(e.ok ? make_matchable_graph(e) : MatchableGraph{});
+  return graphs;
+}
+
 GraphMatch match_graphs(const MatchableGraph& a, const MatchableGraph& b, const MatchingOptions& options) {
   Workspace& workspace = thread_workspace();
   GraphMatch match;

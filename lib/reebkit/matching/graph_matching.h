@@ -77,6 +77,10 @@ struct MatchableGraph {
 /// \pre entry.ok; throws InvalidArgument otherwise.
 MatchableGraph make_matchable_graph(const CollectionEntry& entry);
 
+/// The matchable form of every entry, in order: an empty graph (0 nodes) for
+/// a failed one, which must not be matched.
+std::vector<MatchableGraph> make_matchable_graphs(const std::vector<CollectionEntry>& entries);
+
 /// Matches the graphs of two collection entries (CollectionEntry holds the
 /// attributed graph; make_collection_entry builds one from an analysis).
 /// \pre both entries are ok (have a graph); throws InvalidArgument otherwise.

@@ -16,12 +16,7 @@ PairwiseDistances all_pairs_distances(const std::vector<CollectionEntry>& entrie
   for (const CollectionEntry& e : entries) out.names.push_back(e.name);
   out.values.assign(static_cast<std::size_t>(n * n), 0.0);
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
-  // Each graph's matchable form once, not once per pair.
-  std::vector<MatchableGraph> graphs(entries.size());
-#pragma omp parallel for schedule(dynamic, 8) num_threads(threads)
-  for (std::int64_t i = 0; i < n; ++i)
-    if (entries[static_cast<std::size_t>(i)].ok)
-      graphs[static_cast<std::size_t>(i)] = make_matchable_graph(entries[static_cast<std::size_t>(i)]);
+  const std::vector<MatchableGraph> graphs = make_matchable_graphs(entries);  // once, not once per pair
   // Rows get shorter with i (only j > i): a dynamic schedule balances them.
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (std::int64_t i = 0; i < n; ++i) {

@@ -15,9 +15,7 @@ namespace reebkit {
 SearchableCollection load_searchable(const CollectionReader& collection) {
   SearchableCollection searchable{collection.entries(0, collection.size()),
                                   SignatureIndex(collection.signatures(), kSignatureLength), {}};
-  searchable.graphs.reserve(searchable.entries.size());
-  for (const CollectionEntry& e : searchable.entries)
-    searchable.graphs.push_back(e.ok ? make_matchable_graph(e) : MatchableGraph{});
+  searchable.graphs = make_matchable_graphs(searchable.entries);
   return searchable;
 }
 
