@@ -7,6 +7,7 @@
 //   build/bench/matching_bench shrec.h5
 #include "reebkit/core/timer.h"
 #include "reebkit/matching/graph_matching.h"
+#include "reebkit/store/collection_file.h"
 
 #include <omp.h>
 
@@ -46,7 +47,7 @@ int main(int argc, char** argv) {
     std::vector<reebkit::MatchableGraph> graphs;
     std::vector<int> sizes;
     for (std::int64_t i = 0; i < reader.size(); ++i) {
-      const reebkit::CollectionEntry entry = reader.entry(i);
+      const reebkit::GraphRecord entry = reader.entry(i);
       if (!entry.ok) continue;
       graphs.push_back(reebkit::make_matchable_graph(entry));
       sizes.push_back(graphs.back().num_nodes);

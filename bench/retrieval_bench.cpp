@@ -25,15 +25,15 @@ using namespace reebkit;
 /// `size` entries: the collection's ok entries over and over, every copy after
 /// the first with its node attributes scaled by 1 +- 2 % and its signature
 /// moved by +- 0.01 (clamped to [0,1]), so that no two are the same.
-std::vector<CollectionEntry> replicated(const std::vector<CollectionEntry>& entries, std::int64_t size) {
-  std::vector<const CollectionEntry*> ok;
-  for (const CollectionEntry& e : entries)
+std::vector<GraphRecord> replicated(const std::vector<GraphRecord>& entries, std::int64_t size) {
+  std::vector<const GraphRecord*> ok;
+  for (const GraphRecord& e : entries)
     if (e.ok) ok.push_back(&e);
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  std::vector<CollectionEntry> out;
+  std::vector<GraphRecord> out;
   for (std::int64_t i = 0; i < size; ++i) {
-    CollectionEntry e = *ok[static_cast<std::size_t>(i) % ok.size()];
+    GraphRecord e = *ok[static_cast<std::size_t>(i) % ok.size()];
     if (i >= static_cast<std::int64_t>(ok.size())) {
       e.name = "copy" + std::to_string(i) + "/" + e.name;
       for (double& a : e.node_attributes) a *= 1.0 + 0.02 * u(rng);
@@ -59,10 +59,10 @@ void all_pairs_figures(const CollectionReader& collection) {
 }
 
 void query_figures(const CollectionReader& source, std::int64_t size, const std::filesystem::path& scratch) {
-  const std::vector<CollectionEntry> queries = source.entries(0, source.size());
+  const std::vector<GraphRecord> queries = source.entries(0, source.size());
   {
     CollectionWriter writer(scratch, Provenance{}, false);
-    for (CollectionEntry& e : replicated(queries, size)) writer.append(std::move(e));
+    for (GraphRecord& e : replicated(queries, size)) writer.append(std::move(e));
     writer.close();
   }
   Timer timer;

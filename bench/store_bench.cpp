@@ -23,9 +23,9 @@ using namespace reebkit;
 
 /// A graph of 20 to 50 nodes, a few cycles, ~20 feature points and the
 /// skeleton of 100 levels spread over the nodes.
-CollectionEntry synthetic_entry(std::int64_t i, std::mt19937_64& rng) {
+GraphRecord synthetic_entry(std::int64_t i, std::mt19937_64& rng) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  CollectionEntry e;
+  GraphRecord e;
   e.name = "bench/" + std::to_string(i) + ".off";
   e.class_label = "class" + std::to_string(i % 20);
   e.content_hash = rng();
@@ -54,7 +54,7 @@ CollectionEntry synthetic_entry(std::int64_t i, std::mt19937_64& rng) {
   return e;
 }
 
-std::size_t payload_bytes(const CollectionEntry& e) {
+std::size_t payload_bytes(const GraphRecord& e) {
   return e.name.size() + e.class_label.size() + e.error.size() + 8 * 3 + 1 + sizeof e.timings +
          4 * (e.nodes.size() + e.edges.size() + e.feature_points.size()) +
          8 * (e.node_geometry.size() + e.node_attributes.size() + e.edge_attributes.size() +
@@ -70,7 +70,7 @@ int main(int argc, char** argv) {
 
   // The entries, made before timing (generation is not what is measured).
   std::mt19937_64 rng(7);
-  std::vector<CollectionEntry> entries;
+  std::vector<GraphRecord> entries;
   std::size_t payload = 0;
   for (std::int64_t i = 0; i < kEntries; ++i) {
     entries.push_back(synthetic_entry(i, rng));

@@ -17,10 +17,10 @@
 //   build/experiments/baselines $D $D/shrec07_watertight.cla /tmp/out/shrec07
 //   -> /tmp/out/shrec07-d2.matrix, /tmp/out/shrec07-geodesic.matrix
 #include "reebkit/collection/mesh_inputs.h"
-#include "reebkit/collection/psb_classes.h"
 #include "reebkit/core/error.h"
 #include "reebkit/evaluation/distance_matrix.h"
 #include "reebkit/geodesic/dijkstra.h"
+#include "reebkit/io/psb_classes.h"
 #include "reebkit/mesh/load_mesh.h"
 #include "reebkit/mesh/mesh_graph.h"
 

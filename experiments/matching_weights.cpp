@@ -69,11 +69,11 @@ int main(int argc, char** argv) {
   }
   try {
     const reebkit::CollectionReader reader(argv[1]);
-    std::vector<reebkit::CollectionEntry> entries;
+    std::vector<reebkit::GraphRecord> entries;
     std::vector<std::string> labels;
     std::vector<std::vector<double>> signatures;
     for (std::int64_t i = 0; i < reader.size(); ++i) {
-      reebkit::CollectionEntry entry = reader.entry(i);
+      reebkit::GraphRecord entry = reader.entry(i);
       if (!entry.ok) continue;
       if (entry.class_label.empty()) throw std::runtime_error(entry.name + ": no class label (index with --classes)");
       labels.push_back(entry.class_label);

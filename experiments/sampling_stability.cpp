@@ -17,12 +17,12 @@
 // marching, and with fast marching on the copy refined twice more by plain
 // midpoint subdivision (the same surface, the distance nearer convergence),
 // then how many of the last two persist above each nonzero threshold.
-#include "reebkit/collection/psb_classes.h"
 #include "reebkit/core/timer.h"
 #include "reebkit/features/critical_points.h"
 #include "reebkit/features/persistence.h"
 #include "reebkit/geodesic/dijkstra.h"
 #include "reebkit/geodesic/fast_marching.h"
+#include "reebkit/io/psb_classes.h"
 #include "reebkit/mesh/load_mesh.h"
 #include "reebkit/mesh/mesh_topology.h"
 #include "reebkit/mesh/resampling.h"

@@ -3,8 +3,8 @@
 // class is the file name without its trailing digits (TOSCA: cat0 ... cat10).
 //
 //   build/experiments/signature_stability build/data/tosca_dev > results/signature_stability.md
-#include "reebkit/attributes/graph_attributes.h"
 #include "reebkit/mesh/load_mesh.h"
+#include "reebkit/pipeline/analyze_mesh.h"
 
 #include <algorithm>
 #include <cctype>

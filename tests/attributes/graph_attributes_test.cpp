@@ -1,10 +1,10 @@
 #include "reebkit/attributes/graph_attributes.h"
 
 #include "reebkit/core/error.h"
+#include "reebkit/deform/deformation.h"
 #include "reebkit/mesh/load_mesh.h"
 #include "reebkit/mesh/shapes.h"
 #include "reebkit/mesh/transform.h"
-#include "reebkit/reeb/deformation.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>

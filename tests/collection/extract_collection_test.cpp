@@ -1,11 +1,12 @@
 #include "reebkit/collection/extract_collection.h"
 
 #include "io/io_test_util.h"
-#include "reebkit/collection/collection_entry.h"
 #include "reebkit/io/content_hash.h"
 #include "reebkit/io/off.h"
 #include "reebkit/mesh/load_mesh.h"
 #include "reebkit/mesh/shapes.h"
+#include "reebkit/pipeline/mesh_record.h"
+#include "reebkit/store/collection_file.h"
 
 #include <gtest/gtest.h>
 
@@ -40,7 +41,7 @@ ExtractionOptions with_threads(int threads) {
 }
 
 /// Every field but the timings.
-void expect_same(const CollectionEntry& a, const CollectionEntry& b) {
+void expect_same(const GraphRecord& a, const GraphRecord& b) {
   SCOPED_TRACE(a.name);
   EXPECT_EQ(a.name, b.name);
   EXPECT_EQ(a.class_label, b.class_label);
@@ -69,9 +70,9 @@ void expect_same_files(const std::filesystem::path& a, const std::filesystem::pa
 }
 
 /// The entry of `input` computed directly, without the extractor.
-CollectionEntry direct_entry(const MeshInput& input) {
+GraphRecord direct_entry(const MeshInput& input) {
   const MeshAnalysis analysis = analyze_mesh(load_mesh(input.path).components.front());
-  CollectionEntry entry = make_collection_entry(analysis, compute_attributes(analysis));
+  GraphRecord entry = make_graph_record(analysis, compute_attributes(analysis));
   entry.name = input.name;
   entry.content_hash = content_hash(input.path);
   return entry;
@@ -93,12 +94,12 @@ TEST(ExtractCollection, BrokenMeshIsRecordedAndTheOthersMatchTheDirectPipeline) 
 
   const CollectionReader reader(dir / "c.h5");
   ASSERT_EQ(reader.size(), 8);
-  const CollectionEntry broken = reader.entry(0);
+  const GraphRecord broken = reader.entry(0);
   EXPECT_FALSE(broken.ok);
   EXPECT_EQ(broken.error, summary.failed[0].reason);
   EXPECT_EQ(broken.num_nodes(), 0);
   for (std::size_t i = 1; i < inputs.size(); ++i) {
-    CollectionEntry expected = direct_entry(inputs[i]);
+    GraphRecord expected = direct_entry(inputs[i]);
     expected.class_label = i == 1 ? "star" : i == 6 ? "torus" : "";
     expect_same(reader.entry(static_cast<std::int64_t>(i)), expected);
     EXPECT_EQ(reader.names()[i], inputs[i].name);

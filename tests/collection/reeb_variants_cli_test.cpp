@@ -3,8 +3,8 @@
 // Reeb graph, and the same seed writes the same bytes.
 #include "io/io_test_util.h"
 #include "reebkit/collection/mesh_inputs.h"
-#include "reebkit/collection/psb_classes.h"
 #include "reebkit/io/file_bytes.h"
+#include "reebkit/io/psb_classes.h"
 #include "reebkit/mesh/load_mesh.h"
 #include "reebkit/mesh/mesh_topology.h"
 #include "reebkit/pipeline/analyze_mesh.h"

@@ -17,7 +17,7 @@ namespace {
 
 /// The matchable graph of `n` nodes (zero attributes) and the given edges.
 MatchableGraph graph(int n, const std::vector<std::int32_t>& edges) {
-  CollectionEntry e;
+  GraphRecord e;
   e.ok = true;
   e.nodes.assign(static_cast<std::size_t>(n) * kNodeColumnCount, 0);
   e.node_attributes.assign(static_cast<std::size_t>(n) * kNodeAttributeCount, 0.0);

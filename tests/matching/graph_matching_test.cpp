@@ -1,8 +1,8 @@
 #include "reebkit/matching/graph_matching.h"
 
-#include "reebkit/collection/collection_entry.h"
 #include "reebkit/core/error.h"
 #include "reebkit/mesh/shapes.h"
+#include "reebkit/pipeline/mesh_record.h"
 
 #include <gtest/gtest.h>
 
@@ -16,17 +16,17 @@
 namespace reebkit {
 namespace {
 
-CollectionEntry entry_of(Mesh mesh, const std::string& name) {
+GraphRecord entry_of(Mesh mesh, const std::string& name) {
   const MeshAnalysis analysis = analyze_mesh(std::move(mesh));
-  CollectionEntry entry = make_collection_entry(analysis, compute_attributes(analysis));
+  GraphRecord entry = make_graph_record(analysis, compute_attributes(analysis));
   entry.name = name;
   return entry;
 }
 
 /// Generated shapes of different classes: urchins with 3, 5 and 8 arms, a torus.
-const std::vector<CollectionEntry>& shapes() {
-  static const std::vector<CollectionEntry> all = [] {
-    std::vector<CollectionEntry> v;
+const std::vector<GraphRecord>& shapes() {
+  static const std::vector<GraphRecord> all = [] {
+    std::vector<GraphRecord> v;
     for (const int arms : {3, 5, 8}) {
       StarOptions star;
       star.arms = arms;
@@ -41,8 +41,8 @@ const std::vector<CollectionEntry>& shapes() {
 
 /// The same graph with its nodes renumbered by `order` (new node k is old
 /// node order[k]) and its edges listed in reverse with swapped ends.
-CollectionEntry renumbered(const CollectionEntry& e, const std::vector<std::int32_t>& order) {
-  CollectionEntry r = e;
+GraphRecord renumbered(const GraphRecord& e, const std::vector<std::int32_t>& order) {
+  GraphRecord r = e;
   const auto n = static_cast<std::size_t>(e.num_nodes());
   std::vector<std::int32_t> new_id(n);
   for (std::size_t k = 0; k < n; ++k) {
@@ -66,8 +66,8 @@ CollectionEntry renumbered(const CollectionEntry& e, const std::vector<std::int3
 
 /// Continuous node attributes multiplied by 1 + U(-amount, amount)
 /// (relative areas, f_q range, extents, radii; not degrees and types).
-CollectionEntry jittered(const CollectionEntry& e, double amount, unsigned seed) {
-  CollectionEntry r = e;
+GraphRecord jittered(const GraphRecord& e, double amount, unsigned seed) {
+  GraphRecord r = e;
   std::mt19937 random(seed);
   std::uniform_real_distribution<double> factor(1.0 - amount, 1.0 + amount);
   for (std::size_t i = 0; i < static_cast<std::size_t>(e.num_nodes()); ++i)
@@ -132,7 +132,7 @@ TEST(GraphMatching, InvariantToNodeRenumbering) {
     std::vector<std::int32_t> order(static_cast<std::size_t>(a.num_nodes()));
     std::iota(order.begin(), order.end(), 0);
     std::shuffle(order.begin(), order.end(), random);
-    const CollectionEntry p = renumbered(a, order);
+    const GraphRecord p = renumbered(a, order);
     for (const auto& b : shapes()) {
       const GraphMatch original = match_graphs(a, b), permuted = match_graphs(p, b);
       EXPECT_NEAR(permuted.distance, original.distance, 1e-12) << a.name << " vs " << b.name;
@@ -147,7 +147,7 @@ TEST(GraphMatching, InvariantToNodeRenumbering) {
 TEST(GraphMatching, PerturbedCopyIsCloserThanAnotherClass) {
   const auto& all = shapes();
   for (std::size_t i = 0; i < all.size(); ++i) {
-    const CollectionEntry copy = jittered(all[i], 0.02, static_cast<unsigned>(i) + 1);
+    const GraphRecord copy = jittered(all[i], 0.02, static_cast<unsigned>(i) + 1);
     const double to_copy = match_graphs(all[i], copy).distance;
     EXPECT_GT(to_copy, 0.0) << all[i].name;
     for (std::size_t j = 0; j < all.size(); ++j) {
@@ -172,8 +172,8 @@ TEST(GraphMatching, DeletingEverythingCostsUnmatchedCost) {
 
 /// A random attributed graph of `n` nodes: a random tree plus `extra`
 /// random edges, attributes uniform in [0, 1], start and end types in 0..3.
-CollectionEntry random_graph(int n, int extra, std::mt19937& random) {
-  CollectionEntry e;
+GraphRecord random_graph(int n, int extra, std::mt19937& random) {
+  GraphRecord e;
   e.name = "random" + std::to_string(n);
   e.ok = true;
   e.nodes.assign(static_cast<std::size_t>(n) * kNodeColumnCount, 0);
@@ -226,7 +226,7 @@ const std::vector<MatchableGraph>& oracle_graphs() {
       all.push_back(make_matchable_graph(renumbered(e, order)));
     }
     for (int k = 0; k < 16; ++k) {
-      const CollectionEntry e = random_graph(1 + k * 39 / 15, k, random);
+      const GraphRecord e = random_graph(1 + k * 39 / 15, k, random);
       all.push_back(make_matchable_graph(e));
       all.push_back(make_matchable_graph(jittered(e, 0.01, static_cast<unsigned>(k))));
     }
@@ -278,8 +278,8 @@ TEST(GraphMatching, DistanceUpToALimitIsExactBelowIt) {
 
 TEST(GraphMatching, GlobalShapeTermIsHalfTheL1DistanceOfTheD2Histograms) {
   // The same graph with another whole-surface D2: only g(A, B) differs.
-  const CollectionEntry& a = shapes()[0];
-  CollectionEntry b = a;
+  const GraphRecord& a = shapes()[0];
+  GraphRecord b = a;
   std::fill(b.signature.begin() + kSigGlobalShape, b.signature.end(), 0.0);
   b.signature[kSigGlobalShape] = 1.0;
   double l1 = 0.0;
@@ -293,10 +293,10 @@ TEST(GraphMatching, GlobalShapeTermIsHalfTheL1DistanceOfTheD2Histograms) {
 }
 
 TEST(GraphMatching, RejectsFailedEntries) {
-  const CollectionEntry failed = failed_collection_entry("broken.off", "", 0, "not a mesh");
+  const GraphRecord failed = failed_graph_record("broken.off", "", 0, "not a mesh");
   EXPECT_THROW(match_graphs(failed, shapes()[0]), InvalidArgument);
   EXPECT_THROW(make_matchable_graph(failed), InvalidArgument);
-  CollectionEntry short_signature = shapes()[0];  // e.g. from a layout 1 file
+  GraphRecord short_signature = shapes()[0];  // e.g. from a layout 1 file
   short_signature.signature.resize(32);
   EXPECT_THROW(make_matchable_graph(short_signature), InvalidArgument);
 }

@@ -4,6 +4,7 @@
 // and a mesh against itself is at distance 0 with nothing deleted.
 #include "io/io_test_util.h"
 #include "reebkit/matching/graph_matching.h"
+#include "reebkit/store/collection_file.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>
@@ -31,8 +32,8 @@ TEST(ReebMatchCli, DistanceCorrespondenceAndObj) {
   ASSERT_EQ(indexed, 0) << index_out;
 
   const CollectionReader reader(dir / "c.h5");
-  const CollectionEntry cactus = reader.entry(*reader.find("cactus.off"));
-  const CollectionEntry eight = reader.entry(*reader.find("eight.off"));
+  const GraphRecord cactus = reader.entry(*reader.find("cactus.off"));
+  const GraphRecord eight = reader.entry(*reader.find("eight.off"));
   const GraphMatch expected = match_graphs(cactus, eight);
   ASSERT_GT(expected.distance, 0.0);
 

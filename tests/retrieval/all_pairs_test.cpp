@@ -14,7 +14,7 @@ namespace reebkit::test {
 namespace {
 
 TEST(AllPairs, SymmetricZeroDiagonalEqualToMatchingAndSerialEqualsParallel) {
-  const std::vector<CollectionEntry>& entries = generated_entries();
+  const std::vector<GraphRecord>& entries = generated_entries();
   AllPairsOptions serial;
   serial.threads = 1;
   AllPairsOptions parallel;
@@ -25,11 +25,11 @@ TEST(AllPairs, SymmetricZeroDiagonalEqualToMatchingAndSerialEqualsParallel) {
   ASSERT_EQ(a.size(), n);
   EXPECT_EQ(a.values, b.values);  // bit for bit
   for (std::int64_t i = 0; i < n; ++i) {
-    const CollectionEntry& ei = entries[static_cast<std::size_t>(i)];
+    const GraphRecord& ei = entries[static_cast<std::size_t>(i)];
     EXPECT_EQ(a.names[static_cast<std::size_t>(i)], ei.name);
     EXPECT_EQ(a(i, i), 0.0);
     for (std::int64_t j = 0; j < n; ++j) {
-      const CollectionEntry& ej = entries[static_cast<std::size_t>(j)];
+      const GraphRecord& ej = entries[static_cast<std::size_t>(j)];
       EXPECT_EQ(a(i, j), a(j, i));
       if (i == j) continue;
       if (!ei.ok || !ej.ok) {

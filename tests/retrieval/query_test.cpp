@@ -15,10 +15,10 @@ namespace reebkit::test {
 namespace {
 
 /// Every ok entry matched to the query, by (distance, index), the first k.
-std::vector<QueryResult> brute_force(const CollectionReader& collection, const CollectionEntry& query, int k) {
+std::vector<QueryResult> brute_force(const CollectionReader& collection, const GraphRecord& query, int k) {
   std::vector<QueryResult> all;
   for (std::int64_t i = 0; i < collection.size(); ++i) {
-    const CollectionEntry e = collection.entry(i);
+    const GraphRecord e = collection.entry(i);
     if (e.ok) all.push_back({i, e.name, e.class_label, match_graphs(query, e).distance, 0.0});
   }
   std::stable_sort(all.begin(), all.end(),
@@ -35,14 +35,14 @@ TEST(QueryCollection, WithEveryCandidateTheRankingIsBruteForce) {
   ASSERT_EQ(searchable.index.size(), collection.size() - 1);  // the failed entry is not indexed
   ASSERT_EQ(searchable.entries.size(), static_cast<std::size_t>(collection.size()));
   for (std::int64_t i = 0; i < collection.size(); ++i) {  // one range read == entry by entry
-    const CollectionEntry& e = searchable.entries[static_cast<std::size_t>(i)];
-    const CollectionEntry one = collection.entry(i);
+    const GraphRecord& e = searchable.entries[static_cast<std::size_t>(i)];
+    const GraphRecord one = collection.entry(i);
     EXPECT_EQ(e.name, one.name);
     EXPECT_EQ(e.nodes, one.nodes);
     EXPECT_EQ(e.node_attributes, one.node_attributes);
     EXPECT_EQ(e.edges, one.edges);
   }
-  for (const CollectionEntry& query : generated_entries()) {
+  for (const GraphRecord& query : generated_entries()) {
     if (!query.ok) continue;
     for (const int k : {1, 5, 100}) {
       QueryOptions options;
@@ -66,7 +66,7 @@ TEST(QueryCollection, FewCandidatesRerankTheNearestSignatures) {
   write_generated_collection(dir / "c.h5");
   const CollectionReader collection(dir / "c.h5");
   const SearchableCollection searchable = load_searchable(collection);
-  const CollectionEntry& query = generated_entries()[3];
+  const GraphRecord& query = generated_entries()[3];
   QueryOptions options;
   options.k = 3;
   options.candidates = 4;
@@ -100,7 +100,7 @@ TEST(QueryCollection, FewCandidatesRerankTheNearestSignatures) {
 
 /// `e` with its node attributes scaled by 1 + U(-amount, amount) and its
 /// signature moved by U(-amount, amount) (clamped to [0, 1]).
-CollectionEntry jittered(CollectionEntry e, double amount, std::mt19937& random) {
+GraphRecord jittered(GraphRecord e, double amount, std::mt19937& random) {
   std::uniform_real_distribution<double> u(-amount, amount);
   for (double& a : e.node_attributes) a *= 1.0 + u(random);
   for (double& x : e.signature) x = std::clamp(x + u(random), 0.0, 1.0);
@@ -116,25 +116,25 @@ TEST(QueryCollection, PruningGivesTheRankingOfMatchingEveryCandidate) {
   const TempDir dir;
   {
     CollectionWriter writer(dir / "c.h5", Provenance{}, false);
-    for (const CollectionEntry& e : generated_entries()) writer.append(e);
+    for (const GraphRecord& e : generated_entries()) writer.append(e);
     for (int copy = 0; copy < 10; ++copy)
-      for (const CollectionEntry& e : generated_entries()) {
+      for (const GraphRecord& e : generated_entries()) {
         if (!e.ok) continue;
-        CollectionEntry c = jittered(e, copy < 5 ? 0.02 : 0.2, random);
+        GraphRecord c = jittered(e, copy < 5 ? 0.02 : 0.2, random);
         c.name += "-copy" + std::to_string(copy);
         writer.append(c);
       }
     writer.close();
   }
   const SearchableCollection searchable = load_searchable(CollectionReader(dir / "c.h5"));
-  std::vector<CollectionEntry> queries;
-  for (const CollectionEntry& e : generated_entries()) {
+  std::vector<GraphRecord> queries;
+  for (const GraphRecord& e : generated_entries()) {
     if (!e.ok) continue;
     queries.push_back(e);
     queries.push_back(jittered(e, 0.05, random));
   }
   int cases = 0, pruned = 0;
-  for (const CollectionEntry& query : queries)
+  for (const GraphRecord& query : queries)
     for (const int k : {1, 3, 10})
       for (const int candidates : {10, 40, 133})
         for (const int threads : {1, 2}) {
@@ -169,7 +169,7 @@ TEST(QueryCollection, RejectsBadOptionsAndFailedQueries) {
   const TempDir dir;
   write_generated_collection(dir / "c.h5");
   const CollectionReader collection(dir / "c.h5");
-  const CollectionEntry& query = generated_entries()[0];
+  const GraphRecord& query = generated_entries()[0];
   QueryOptions options;
   options.k = 0;
   EXPECT_THROW(query_collection(collection, query, options), InvalidArgument);

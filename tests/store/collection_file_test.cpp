@@ -30,11 +30,11 @@ const char* const kPython = "/usr/bin/python3";
 /// A deterministic entry for index i: graphs of 0 to 49 nodes, some failed
 /// entries (i % 11 == 5), UTF-8 names (i % 7 == 3), missing classes, feature
 /// points on added vertices (-1), nodes without skeleton points.
-CollectionEntry make_entry(std::int64_t i) {
+GraphRecord make_entry(std::int64_t i) {
   std::mt19937_64 rng(static_cast<std::uint64_t>(i) * 0x9e3779b97f4a7c15ULL + 1);
   std::uniform_real_distribution<double> real(-1e3, 1e3);
   const auto below = [&](std::int32_t n) { return static_cast<std::int32_t>(rng() % static_cast<std::uint64_t>(n)); };
-  CollectionEntry e;
+  GraphRecord e;
   e.name = (i % 7 == 3 ? "Ünïcødé/蛇 " : "shrec/") + std::to_string(i) + ".off";
   e.class_label = i % 3 == 0 ? "" : "class " + std::to_string(i % 5);
   e.content_hash = rng();
@@ -69,7 +69,7 @@ CollectionEntry make_entry(std::int64_t i) {
 
 /// Field-by-field equality (doubles bit for bit; a failed entry's signature
 /// reads back as NaN).
-void expect_same(const CollectionEntry& expected, const CollectionEntry& actual, const std::string& where) {
+void expect_same(const GraphRecord& expected, const GraphRecord& actual, const std::string& where) {
   SCOPED_TRACE(where + " entry '" + expected.name + "'");
   EXPECT_EQ(expected.name, actual.name);
   EXPECT_EQ(expected.class_label, actual.class_label);
@@ -120,7 +120,7 @@ void expect_entries(const std::filesystem::path& path, std::int64_t count) {
   ASSERT_EQ(reader.names().size(), static_cast<std::size_t>(count));
   ASSERT_EQ(reader.signatures().size(), static_cast<std::size_t>(count * kSignatureLength));
   for (std::int64_t i = 0; i < count; ++i) {
-    const CollectionEntry e = make_entry(i);
+    const GraphRecord e = make_entry(i);
     expect_same(e, reader.entry(i), path.filename().string());
     EXPECT_EQ(reader.names()[static_cast<std::size_t>(i)], e.name);
     EXPECT_EQ(reader.class_labels()[static_cast<std::size_t>(i)], e.class_label);
@@ -236,7 +236,7 @@ TEST(CollectionFile, ErrorsNameTheFile) {
 TEST(CollectionFile, RejectsInconsistentEntries) {
   const TempDir dir;
   CollectionWriter writer(dir / "c.h5", test_provenance(), false);
-  CollectionEntry e = make_entry(1);
+  GraphRecord e = make_entry(1);
   e.node_attributes.pop_back();
   EXPECT_THROW(writer.append(e), InvalidArgument);
   e = make_entry(1);
@@ -343,14 +343,14 @@ std::vector<T> parse(const std::vector<std::string>& cells) {
 }
 
 /// Entry i as Python printed it.
-CollectionEntry entry_from_python(const std::map<std::string, std::vector<std::string>>& fields, std::int64_t i) {
+GraphRecord entry_from_python(const std::map<std::string, std::vector<std::string>>& fields, std::int64_t i) {
   const auto field = [&](const std::string& key) -> const std::vector<std::string>& {
     static const std::vector<std::string> none;
     const auto it = fields.find(std::to_string(i) + "/" + key);
     return it == fields.end() ? none : it->second;
   };
   const auto one = [&](const std::string& key) { return field(key).empty() ? std::string() : field(key).front(); };
-  CollectionEntry e;
+  GraphRecord e;
   e.name = one("name");
   e.class_label = one("class");
   e.error = one("error");

@@ -4,8 +4,8 @@
 // nodes to choose from.
 #include "reeb/cli.h"
 #include "reebkit/core/error.h"
+#include "reebkit/deform/deformation.h"
 #include "reebkit/io/mesh_io.h"
-#include "reebkit/reeb/deformation.h"
 
 #include <algorithm>
 #include <iomanip>

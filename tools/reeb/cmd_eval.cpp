@@ -3,12 +3,12 @@
 // al. 2004; definitions in reebkit/evaluation/retrieval_metrics.h), written as
 // a Markdown report with the precision-recall curves as CSV and as a plot.
 #include "reeb/cli.h"
-#include "reebkit/collection/psb_classes.h"
 #include "reebkit/core/error.h"
 #include "reebkit/evaluation/distance_matrix.h"
 #include "reebkit/evaluation/local_scaling.h"
 #include "reebkit/evaluation/retrieval_metrics.h"
 #include "reebkit/io/file_bytes.h"
+#include "reebkit/io/psb_classes.h"
 
 #include <cstdlib>
 #include <filesystem>

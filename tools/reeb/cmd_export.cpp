@@ -3,6 +3,7 @@
 #include "reeb/cli.h"
 #include "reebkit/core/error.h"
 #include "reebkit/output/reeb_graph_export.h"
+#include "reebkit/store/collection_file.h"
 
 #include <fstream>
 #include <iostream>
@@ -27,7 +28,7 @@ int run_export(const std::vector<std::string>& args) {
   const CollectionReader reader(path);
   const auto index = reader.find(name);
   if (!index) throw Error(path + ": no mesh named '" + name + "' (reeb info lists them)");
-  const CollectionEntry entry = reader.entry(*index);
+  const GraphRecord entry = reader.entry(*index);
   if (!entry.ok) throw Error(path + ": mesh '" + name + "' failed when indexed: " + entry.error);
   if (output.empty()) {
     write_reeb_graph_json(std::cout, name, {entry});

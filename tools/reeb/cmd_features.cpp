@@ -2,10 +2,10 @@
 // (Tierny et al. 2006, section 4.1).
 #include "reeb/cli.h"
 #include "reebkit/core/error.h"
+#include "reebkit/io/json_writer.h"
 #include "reebkit/io/ply.h"
 #include "reebkit/mesh/hole_filling.h"
 #include "reebkit/output/colormap.h"
-#include "reebkit/output/json_writer.h"
 #include "reebkit/pipeline/analyze_mesh.h"
 
 #include <fstream>

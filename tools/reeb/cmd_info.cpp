@@ -23,7 +23,7 @@ int run_info(const std::vector<std::string>& args) {
   std::map<std::string, std::int64_t> classes;
   std::vector<std::pair<std::string, std::string>> failures;
   for (std::int64_t i = 0; i < reader.size(); ++i) {
-    const CollectionEntry e = reader.entry(i);
+    const GraphRecord e = reader.entry(i);
     if (e.ok) {
       ++ok;
       nodes += e.num_nodes();

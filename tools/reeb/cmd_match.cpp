@@ -2,10 +2,11 @@
 // meshes (matching/graph_matching.h) and the node correspondence. A and B
 // are mesh files, analysed on the fly, or COLLECTION.h5:NAME entries.
 #include "reeb/cli.h"
-#include "reebkit/collection/collection_entry.h"
 #include "reebkit/core/error.h"
 #include "reebkit/matching/graph_matching.h"
+#include "reebkit/pipeline/mesh_record.h"
 #include "reebkit/reeb/reeb_graph.h"
+#include "reebkit/store/collection_file.h"
 
 #include <algorithm>
 #include <array>
@@ -21,37 +22,37 @@ namespace {
 
 /// The entry named by `spec`: COLLECTION.h5:NAME, or a mesh file whose
 /// largest component is analysed with the default options.
-CollectionEntry entry_for(const std::string& spec) {
+GraphRecord entry_for(const std::string& spec) {
   const auto colon = spec.find(".h5:");
   if (colon != std::string::npos) {
     const std::string path = spec.substr(0, colon + 3), name = spec.substr(colon + 4);
     const CollectionReader reader(path);
     const auto index = reader.find(name);
     if (!index) throw Error(path + ": no mesh named '" + name + "' (reeb info lists them)");
-    CollectionEntry entry = reader.entry(*index);
+    GraphRecord entry = reader.entry(*index);
     if (!entry.ok) throw Error(path + ": mesh '" + name + "' failed when indexed: " + entry.error);
     return entry;
   }
   return analyze_mesh_file(spec, spec);
 }
 
-std::string node_label(const CollectionEntry& e, std::int32_t node) {
+std::string node_label(const GraphRecord& e, std::int32_t node) {
   const auto row = static_cast<std::size_t>(node) * kNodeColumnCount;
   return std::string(node_type_name(static_cast<NodeType>(e.nodes[row + kNodeType]))) + "->" +
          node_type_name(static_cast<NodeType>(e.nodes[row + kNodeEnd]));
 }
 
-double relative_area(const CollectionEntry& e, std::int32_t node) {
+double relative_area(const GraphRecord& e, std::int32_t node) {
   return e.node_attributes[static_cast<std::size_t>(node) * kNodeAttributeCount + kNodeRelativeArea];
 }
 
-void print_match(const CollectionEntry& a, const CollectionEntry& b, const GraphMatch& match) {
+void print_match(const GraphRecord& a, const GraphRecord& b, const GraphMatch& match) {
   std::cout << std::defaultfloat << std::setprecision(6) << "distance " << match.distance << "\n"
             << "A: " << a.name << " (" << a.num_nodes() << " nodes, " << a.num_edges() << " edges)\n"
             << "B: " << b.name << " (" << b.num_nodes() << " nodes, " << b.num_edges() << " edges)\n"
             << "correspondence (node, start->end type, relative area):\n";
   std::vector<char> matched(static_cast<std::size_t>(b.num_nodes()), 0);
-  const auto side = [](const CollectionEntry& e, std::int32_t node) {
+  const auto side = [](const GraphRecord& e, std::int32_t node) {
     std::ostringstream s;
     s << std::setw(4) << node << "  " << std::left << std::setw(26) << node_label(e, node) << std::right
       << std::fixed << std::setprecision(4) << relative_area(e, node);
@@ -74,7 +75,7 @@ void print_match(const CollectionEntry& a, const CollectionEntry& b, const Graph
 using Box = std::array<double, 2>;  // smallest and largest x
 
 /// x range of a graph's node barycenters and skeleton points.
-Box x_range(const CollectionEntry& e) {
+Box x_range(const GraphRecord& e) {
   Box box = {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
   const auto extend = [&](double x) { box = {std::min(box[0], x), std::max(box[1], x)}; };
   for (std::size_t i = 0; i < static_cast<std::size_t>(e.num_nodes()); ++i)
@@ -85,14 +86,14 @@ Box x_range(const CollectionEntry& e) {
 
 /// Both graphs as OBJ lines between node barycenters (B shifted along x to
 /// stand half A's width to the right of A), and a line per matched pair.
-void write_obj(const std::string& path, const CollectionEntry& a, const CollectionEntry& b, const GraphMatch& match) {
+void write_obj(const std::string& path, const GraphRecord& a, const GraphRecord& b, const GraphMatch& match) {
   std::ofstream out(path);
   if (!out) throw Error(path + ": cannot open for writing");
   const Box ba = x_range(a), bb = x_range(b);
   const double shift = ba[1] - bb[0] + 0.5 * (ba[1] - ba[0]);
   out << "# reeb match " << a.name << " " << b.name << ": distance " << match.distance << "\n"
       << "# vertices: node barycenters of A, then of B (shifted by " << shift << " along x)\n";
-  const auto vertices = [&](const CollectionEntry& e, double dx) {
+  const auto vertices = [&](const GraphRecord& e, double dx) {
     for (std::size_t i = 0; i < static_cast<std::size_t>(e.num_nodes()); ++i) {
       const double* g = &e.node_geometry[i * kGeomColumnCount];
       out << "v " << g[kGeomBarycenterX] + dx << " " << g[kGeomBarycenterY] << " " << g[kGeomBarycenterZ] << "\n";
@@ -100,7 +101,7 @@ void write_obj(const std::string& path, const CollectionEntry& a, const Collecti
   };
   vertices(a, 0.0);
   vertices(b, shift);
-  const auto edges = [&](const char* name, const CollectionEntry& e, std::int32_t first) {
+  const auto edges = [&](const char* name, const GraphRecord& e, std::int32_t first) {
     out << "o " << name << "\n";
     for (std::int32_t k = 0; k < e.num_edges(); ++k)
       out << "l " << first + e.edges[2 * static_cast<std::size_t>(k)] << " "
@@ -142,7 +143,7 @@ int run_match(const std::vector<std::string>& args) {
   if (!parse(args, "reeb match A B [--obj lines.obj]   (A, B: mesh files or collection.h5:NAME)", options,
              positional, vm))
     return 0;
-  const CollectionEntry a = entry_for(spec_a), b = entry_for(spec_b);
+  const GraphRecord a = entry_for(spec_a), b = entry_for(spec_b);
   const GraphMatch match = match_graphs(a, b, matching);
   print_match(a, b, match);
   if (!obj_path.empty()) {

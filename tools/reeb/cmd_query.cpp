@@ -2,10 +2,10 @@
 // to a query, pre-filtered by graph signature (FLANN, exact) and reranked by
 // graph matching (README, "Query and distances").
 #include "reeb/cli.h"
-#include "reebkit/collection/collection_entry.h"
 #include "reebkit/core/error.h"
 #include "reebkit/core/timer.h"
-#include "reebkit/output/json_writer.h"
+#include "reebkit/io/json_writer.h"
+#include "reebkit/pipeline/mesh_record.h"
 #include "reebkit/retrieval/query.h"
 
 #include <iomanip>
@@ -17,8 +17,8 @@ namespace {
 
 /// The query's entry: the collection's own when `query` names one of its
 /// meshes, otherwise the mesh file analysed as reeb index does (largest component).
-CollectionEntry query_entry(const CollectionReader& collection, const std::string& query,
-                            const AnalysisOptions& analysis) {
+GraphRecord query_entry(const CollectionReader& collection, const std::string& query,
+                        const AnalysisOptions& analysis) {
   if (const auto index = collection.find(query)) return collection.entry(*index);
   return analyze_mesh_file(query, query, analysis);
 }
@@ -76,7 +76,7 @@ int run_query(const std::vector<std::string>& args) {
   const CollectionReader collection(path);
   Timer timer;
   const bool in_collection = collection.find(query).has_value();
-  const CollectionEntry entry = query_entry(collection, query, analysis);
+  const GraphRecord entry = query_entry(collection, query, analysis);
   if (!entry.ok) throw Error(path + ": mesh '" + query + "' failed when indexed: " + entry.error);
   const double extract_ms = timer.lap();
   const SearchableCollection searchable = load_searchable(collection);

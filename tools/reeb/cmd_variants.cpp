@@ -18,11 +18,11 @@
 #include "reeb/cli.h"
 #include "reebkit/collection/mesh_inputs.h"
 #include "reebkit/core/error.h"
+#include "reebkit/deform/deformation.h"
 #include "reebkit/io/off.h"
 #include "reebkit/mesh/resampling.h"
 #include "reebkit/mesh/transform.h"
 #include "reebkit/pipeline/analyze_mesh.h"
-#include "reebkit/reeb/deformation.h"
 
 #include <algorithm>
 #include <cmath>

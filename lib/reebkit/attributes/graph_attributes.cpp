@@ -52,15 +52,6 @@
 
 namespace reebkit {
 
-const std::array<const char*, kNodeAttributeCount> kNodeAttributeNames = {
-    "relative_area", "fq_min",       "fq_max",       "fq_span",      "geodesic_extent", "mean_radius",
-    "vertex_share",  "degree",       "start_type",   "end_type",     "radius_0",        "radius_1",
-    "radius_2",      "radius_3",     "radius_4",     "radius_5",     "radius_6",        "radius_7",
-    "shape_0",       "shape_1",      "shape_2",      "shape_3",      "shape_4",         "shape_5",
-    "shape_6",       "shape_7"};
-
-const std::array<const char*, kEdgeAttributeCount> kEdgeAttributeNames = {"boundary_length", "event_fq"};
-
 namespace {
 
 constexpr int kLevels = kRadiusProfileLevels;  // level lines per region for kNodeMeanRadius
@@ -349,36 +340,24 @@ void laplacian_spectrum(const ReebGraph& reeb, const std::vector<double>& degree
 
 }  // namespace
 
-const std::array<const char*, kSignatureLength> kSignatureNames = {
-    "nodes",          "leaves",         "bifurcations",   "junctions",      "cycles",         "root_area",
-    "leaf_area_0",    "leaf_area_1",    "leaf_area_2",    "leaf_area_3",    "leaf_area_4",    "leaf_area_5",
-    "leaf_extent_0",  "leaf_extent_1",  "leaf_extent_2",  "leaf_extent_3",  "leaf_extent_4",  "leaf_extent_5",
-    "area_hist_0",    "area_hist_1",    "area_hist_2",    "area_hist_3",    "area_hist_4",    "area_hist_5",
-    "laplacian_2",    "laplacian_3",    "laplacian_4",    "laplacian_5",    "laplacian_6",    "laplacian_7",
-    "laplacian_8",    "laplacian_9",    "d2_0",           "d2_1",           "d2_2",           "d2_3",
-    "d2_4",           "d2_5",           "d2_6",           "d2_7",           "d2_8",           "d2_9",
-    "d2_10",          "d2_11",          "d2_12",          "d2_13",          "d2_14",          "d2_15"};
-
-GraphAttributes compute_attributes(const MeshAnalysis& analysis) {
-  const Mesh& mesh = analysis.mesh;
-  const ReebGraph& reeb = analysis.reeb;
-  const std::vector<double>& f = analysis.fq.value;
+GraphAttributes compute_attributes(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f,
+                                   double geodesic_diameter, const ReebGraph& reeb) {
   const auto where = [&] { return mesh.source.empty() ? std::string("mesh in memory") : mesh.source; };
   if (reeb.nodes.empty())
     throw InvalidArgument("compute_attributes: " + where() +
                           " has no Reeb graph (analyzed with AnalysisOptions::reeb_graph = false)");
   if (reeb.vertex_node.size() != at(mesh.num_vertices()) || f.size() != at(mesh.num_vertices()) ||
-      analysis.graph.num_vertices() != mesh.num_vertices())
+      graph.num_vertices() != mesh.num_vertices())
     throw InvalidArgument("compute_attributes: " + where() +
                           ": the mesh, its graph, f_q and the segmentation differ in vertex count");
 
   const Index original_vertices = original_vertex_count(mesh);
   const TriangleSums sums = triangle_sums(mesh, original_vertices, f, reeb);
-  const std::vector<double> extent = geodesic_extents(analysis.graph, f, reeb);
+  const std::vector<double> extent = geodesic_extents(graph, f, reeb);
   std::array<double, kGlobalShapeBins> global_shape{};
   const std::vector<double> shape = shape_histograms(mesh, original_vertices, reeb, global_shape.data());
   const double length_unit = sums.total_area > 0.0 ? std::sqrt(sums.total_area) : 1.0;
-  const double diameter = analysis.features.diameter > 0.0 ? analysis.features.diameter : 1.0;
+  const double diameter = geodesic_diameter > 0.0 ? geodesic_diameter : 1.0;
   const auto relative = [](double value, double whole) { return whole > 0.0 ? value / whole : 0.0; };
 
   std::vector<Index> vertices(reeb.nodes.size(), 0);

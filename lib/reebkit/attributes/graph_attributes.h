@@ -6,61 +6,15 @@
 // and sampling (area rather than vertex counts where both exist).
 #pragma once
 
-#include "reebkit/pipeline/analyze_mesh.h"
+#include "reebkit/attributes/graph_record.h"
+#include "reebkit/core/mesh.h"
+#include "reebkit/mesh/mesh_graph.h"
+#include "reebkit/reeb/reeb_graph.h"
 
 #include <array>
 #include <vector>
 
 namespace reebkit {
-
-/// Columns of GraphAttributes::node, in order (README: attribute table).
-enum NodeAttribute : int {
-  kNodeRelativeArea,      ///< region area / mesh area
-  kNodeFqMin,             ///< smallest f_q over the region
-  kNodeFqMax,             ///< largest f_q over the region
-  kNodeFqSpan,            ///< fq_max - fq_min
-  kNodeGeodesicExtent,    ///< geodesic extent of the region / geodesic diameter of the mesh
-  kNodeMeanRadius,        ///< mean over its level lines of length / (2 pi), / sqrt(mesh area)
-  kNodeVertexShare,       ///< region vertices / mesh vertices
-  kNodeDegree,            ///< number of graph edges at the node
-  kNodeStartType,         ///< NodeType the region starts with, as a number
-  kNodeEndType,           ///< NodeType the region ends with, as a number
-  /// Thickness profile: the level-line radius (length / (2 pi) / sqrt(mesh
-  /// area)) at each of the kRadiusProfileLevels levels mean_radius averages,
-  /// from fq_min to fq_max.
-  kNodeRadiusProfile,
-  /// Shape of the region: a histogram (kShapeBins bins, sums to 1) of the
-  /// Euclidean distance between random points of the region, / sqrt(region
-  /// area) (the D2 distribution of Osada et al. 2002, restricted to a part).
-  kNodeShapeHistogram = kNodeRadiusProfile + 8,
-  kNodeAttributeCount = kNodeShapeHistogram + 8
-};
-
-/// Levels of kNodeRadiusProfile and bins of kNodeShapeHistogram.
-inline constexpr int kRadiusProfileLevels = kNodeShapeHistogram - kNodeRadiusProfile;
-inline constexpr int kShapeBins = kNodeAttributeCount - kNodeShapeHistogram;
-
-/// Columns of GraphAttributes::edge, in order.
-enum EdgeAttribute : int {
-  kEdgeBoundaryLength,  ///< length of the level line where the two regions meet / sqrt(mesh area)
-  kEdgeEventFq,         ///< f_q at the event joining the two regions
-  kEdgeAttributeCount
-};
-
-/// Column names, for file headers and documentation (snake_case).
-extern const std::array<const char*, kNodeAttributeCount> kNodeAttributeNames;
-extern const std::array<const char*, kEdgeAttributeCount> kEdgeAttributeNames;
-
-/// Length of the per-graph signature vector used for nearest-neighbour
-/// pre-filtering (FLANN): fixed whatever the graph.
-inline constexpr int kSignatureLength = 48;
-/// The last kGlobalShapeBins entries of the signature: the D2 shape
-/// distribution of the whole surface (distances between random points /
-/// sqrt(mesh area), bins of 0.15, summing to 1), compared by the matcher.
-inline constexpr int kGlobalShapeBins = 16;
-inline constexpr int kSigGlobalShape = kSignatureLength - kGlobalShapeBins;
-/// Name of each signature entry.
-extern const std::array<const char*, kSignatureLength> kSignatureNames;
 
 struct GraphAttributes {
   std::vector<double> node;       ///< #nodes x kNodeAttributeCount, row-major, node order of ReebGraph::nodes
@@ -68,9 +22,14 @@ struct GraphAttributes {
   std::vector<double> signature;  ///< kSignatureLength entries
 };
 
-/// The attributes of `analysis.reeb` on `analysis.mesh` (the surface as read:
-/// vertices added by hole filling do not count towards areas and shares).
-/// \pre analysis.reeb has been built (AnalysisOptions::reeb_graph).
-GraphAttributes compute_attributes(const MeshAnalysis& analysis);
+/// The attributes of `reeb`, the high-level Reeb graph of f_q on `mesh` (its
+/// graph `graph`), with the columns of graph_record.h. Areas and shares count
+/// the surface as read (vertices added by hole filling, see
+/// original_vertex_count, are left out); geodesic extents are divided by
+/// `geodesic_diameter` (FeaturePoints::diameter, section 4.1.2).
+/// \pre reeb has nodes, and mesh, graph, fq and reeb.vertex_node agree in
+///      vertex count; throws InvalidArgument otherwise.
+GraphAttributes compute_attributes(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& fq,
+                                   double geodesic_diameter, const ReebGraph& reeb);
 
 }  // namespace reebkit

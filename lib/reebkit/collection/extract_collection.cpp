@@ -1,10 +1,11 @@
 #include "reebkit/collection/extract_collection.h"
 
-#include "reebkit/collection/collection_entry.h"
 #include "reebkit/core/error.h"
 #include "reebkit/core/timer.h"
 #include "reebkit/io/content_hash.h"
-#include "reebkit/output/json_writer.h"
+#include "reebkit/io/json_writer.h"
+#include "reebkit/pipeline/mesh_record.h"
+#include "reebkit/store/collection_file.h"
 
 #include <omp.h>
 
@@ -32,15 +33,15 @@ class Stopwatch {
 };
 
 /// The entry of one mesh; any exception becomes a failed entry.
-CollectionEntry compute_entry(const MeshInput& input, std::uint64_t hash, const std::string& class_label,
-                              const AnalysisOptions& options) {
+GraphRecord compute_entry(const MeshInput& input, std::uint64_t hash, const std::string& class_label,
+                          const AnalysisOptions& options) {
   try {
-    CollectionEntry entry = analyze_mesh_file(input.path, input.name, options);
+    GraphRecord entry = analyze_mesh_file(input.path, input.name, options);
     entry.class_label = class_label;
     entry.content_hash = hash;
     return entry;
   } catch (const std::exception& e) {
-    return failed_collection_entry(input.name, class_label, hash, e.what());
+    return failed_graph_record(input.name, class_label, hash, e.what());
   }
 }
 
@@ -51,7 +52,7 @@ class EntrySink {
             ProgressState& progress, const Stopwatch& clock)
       : writer_(writer), options_(options), summary_(summary), progress_(progress), clock_(clock) {}
 
-  void write(CollectionEntry entry) {
+  void write(GraphRecord entry) {
     if (entry.ok) {
       ++summary_.ok;
       ++progress_.ok;
@@ -96,7 +97,7 @@ class EntrySink {
 /// `window` entries ahead of the writer, which bounds memory.
 template <typename Compute>
 void compute_in_order(std::size_t count, int workers, std::size_t window, Compute compute, EntrySink& sink) {
-  std::vector<std::optional<CollectionEntry>> ring(window);
+  std::vector<std::optional<GraphRecord>> ring(window);
   std::mutex mutex;
   std::condition_variable ready, space;
   std::size_t written = 0;  // entries taken by the writer (guarded by mutex)
@@ -114,7 +115,7 @@ void compute_in_order(std::size_t count, int workers, std::size_t window, Comput
             sink.write(compute(k));
             continue;
           }
-          CollectionEntry entry;
+          GraphRecord entry;
           {
             std::unique_lock<std::mutex> lock(mutex);
             ready.wait(lock, [&] { return ring[k % window].has_value(); });
@@ -139,7 +140,7 @@ void compute_in_order(std::size_t count, int workers, std::size_t window, Comput
           space.wait(lock, [&] { return abort || k < written + window; });
           if (abort) break;
         }
-        CollectionEntry entry = compute(k);
+        GraphRecord entry = compute(k);
         {
           const std::lock_guard<std::mutex> lock(mutex);
           ring[k % window] = std::move(entry);

@@ -7,7 +7,7 @@
 
 #include "reebkit/collection/mesh_inputs.h"
 #include "reebkit/collection/progress.h"
-#include "reebkit/collection/psb_classes.h"
+#include "reebkit/io/psb_classes.h"
 #include "reebkit/pipeline/analyze_mesh.h"
 
 #include <cstdint>
@@ -51,7 +51,7 @@ std::string analysis_options_json(const AnalysisOptions& options);
 
 /// Indexes `inputs` into the collection file `output`: per mesh, load_mesh
 /// (largest component), analyze_mesh, compute_attributes and
-/// make_collection_entry, with the class from `classes` (class_of) and the
+/// make_graph_record, with the class from `classes` (class_of) and the
 /// content hash of its file. Any exception on a mesh becomes a failed entry
 /// with its message; the batch goes on. Entries are appended in input order
 /// and checkpointed (options), so an interrupted run leaves a file holding

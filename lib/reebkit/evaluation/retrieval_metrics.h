@@ -25,9 +25,9 @@
 // their class means.
 #pragma once
 
-#include "reebkit/collection/psb_classes.h"
 #include "reebkit/core/types.h"
 #include "reebkit/evaluation/distance_matrix.h"
+#include "reebkit/io/psb_classes.h"
 
 #include <string>
 #include <vector>

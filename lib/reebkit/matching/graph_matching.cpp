@@ -16,7 +16,7 @@ namespace {
 
 using F = MatchableGraph::Feature;
 
-void require_ok(const CollectionEntry& entry) {
+void require_ok(const GraphRecord& entry) {
   if (!entry.ok) throw InvalidArgument("match_graphs: entry '" + entry.name + "' has no graph (" + entry.error + ")");
 }
 
@@ -186,7 +186,7 @@ double global_shape_term(const MatchableGraph& a, const MatchableGraph& b, const
 
 }  // namespace
 
-MatchableGraph make_matchable_graph(const CollectionEntry& entry) {
+MatchableGraph make_matchable_graph(const GraphRecord& entry) {
   require_ok(entry);
   MatchableGraph g;
   g.num_nodes = entry.num_nodes();
@@ -236,10 +236,10 @@ MatchableGraph make_matchable_graph(const CollectionEntry& entry) {
   return g;
 }
 
-std::vector<MatchableGraph> make_matchable_graphs(const std::vector<CollectionEntry>& entries) {
+std::vector<MatchableGraph> make_matchable_graphs(const std::vector<GraphRecord>& entries) {
   std::vector<MatchableGraph> graphs;
   graphs.reserve(entries.size());
-  for (const CollectionEntry& e : entries) graphs.push_back(e.ok ? make_matchable_graph(e) : MatchableGraph{});
+  for (const GraphRecord& e : entries) graphs.push_back(e.ok ? make_matchable_graph(e) : MatchableGraph{});
   return graphs;
 }
 
@@ -332,7 +332,7 @@ double match_distance_up_to(const MatchableGraph& a, const MatchableGraph& b, do
          global;
 }
 
-GraphMatch match_graphs(const CollectionEntry& a, const CollectionEntry& b, const MatchingOptions& options) {
+GraphMatch match_graphs(const GraphRecord& a, const GraphRecord& b, const MatchingOptions& options) {
   return match_graphs(make_matchable_graph(a), make_matchable_graph(b), options);
 }
 

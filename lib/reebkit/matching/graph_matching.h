@@ -5,7 +5,7 @@
 // consistency.
 #pragma once
 
-#include "reebkit/store/collection_file.h"
+#include "reebkit/attributes/graph_record.h"
 
 #include <cstdint>
 #include <vector>
@@ -75,16 +75,16 @@ struct MatchableGraph {
 
 /// The matchable form of an entry's graph.
 /// \pre entry.ok; throws InvalidArgument otherwise.
-MatchableGraph make_matchable_graph(const CollectionEntry& entry);
+MatchableGraph make_matchable_graph(const GraphRecord& entry);
 
 /// The matchable form of every entry, in order: an empty graph (0 nodes) for
 /// a failed one, which must not be matched.
-std::vector<MatchableGraph> make_matchable_graphs(const std::vector<CollectionEntry>& entries);
+std::vector<MatchableGraph> make_matchable_graphs(const std::vector<GraphRecord>& entries);
 
-/// Matches the graphs of two collection entries (CollectionEntry holds the
-/// attributed graph; make_collection_entry builds one from an analysis).
+/// Matches the graphs of two collection entries (GraphRecord holds the
+/// attributed graph; make_graph_record builds one from an analysis).
 /// \pre both entries are ok (have a graph); throws InvalidArgument otherwise.
-GraphMatch match_graphs(const CollectionEntry& a, const CollectionEntry& b, const MatchingOptions& options = {});
+GraphMatch match_graphs(const GraphRecord& a, const GraphRecord& b, const MatchingOptions& options = {});
 
 /// The same on precomputed graphs: allocates nothing but the correspondence
 /// once the calling thread's buffers have grown (for all-pairs distances).

@@ -1,11 +1,11 @@
 #include "reebkit/output/reeb_graph_export.h"
 
-#include "reebkit/collection/collection_entry.h"
 #include "reebkit/core/error.h"
+#include "reebkit/io/json_writer.h"
 #include "reebkit/io/ply.h"
 #include "reebkit/mesh/hole_filling.h"
 #include "reebkit/output/colormap.h"
-#include "reebkit/output/json_writer.h"
+#include "reebkit/pipeline/mesh_record.h"
 
 #include <fstream>
 #include <string>
@@ -44,7 +44,7 @@ void check_written(const std::ofstream& out, const std::filesystem::path& path) 
 
 }  // namespace
 
-void write_reeb_graph_json(std::ostream& out, const std::string& mesh, const std::vector<CollectionEntry>& components) {
+void write_reeb_graph_json(std::ostream& out, const std::string& mesh, const std::vector<GraphRecord>& components) {
   if (components.empty()) throw InvalidArgument("write_reeb_graph_json: no components");
   for (std::size_t c = 0; c < components.size(); ++c)
     if (!components[c].ok || components[c].nodes.empty())
@@ -53,7 +53,7 @@ void write_reeb_graph_json(std::ostream& out, const std::string& mesh, const std
   long long vertices = 0, triangles = 0, cycles = 0, leaves = 0;
   std::array<double, kTimeColumnCount> time{};
   std::vector<long long> features;
-  for (const CollectionEntry& e : components) {
+  for (const GraphRecord& e : components) {
     vertices += e.vertices;
     triangles += e.faces;
     cycles += independent_cycles(e);
@@ -74,7 +74,7 @@ void write_reeb_graph_json(std::ostream& out, const std::string& mesh, const std
   json.key("nodes").begin_array();
   long long first = 0;  // id of the component's node 0
   for (std::size_t c = 0; c < components.size(); ++c) {
-    const CollectionEntry& e = components[c];
+    const GraphRecord& e = components[c];
     for (std::size_t n = 0; n < static_cast<std::size_t>(e.num_nodes()); ++n) {
       const std::int32_t* node = &e.nodes[n * kNodeColumnCount];
       const double* geometry = &e.node_geometry[n * kGeomColumnCount];
@@ -101,14 +101,14 @@ void write_reeb_graph_json(std::ostream& out, const std::string& mesh, const std
 
   json.key("edges").begin_array();
   first = 0;
-  for (const CollectionEntry& e : components) {
+  for (const GraphRecord& e : components) {
     for (std::size_t k = 0; k < e.edges.size(); k += 2)
       json.numbers(std::vector<long long>{first + e.edges[k], first + e.edges[k + 1]});
     first += e.num_nodes();
   }
   json.end_array();
   json.key("edge_attributes").begin_array();
-  for (const CollectionEntry& e : components) {
+  for (const GraphRecord& e : components) {
     for (std::size_t k = 0; k < static_cast<std::size_t>(e.num_edges()); ++k) {
       json.begin_object();
       for (std::size_t a = 0; a < kEdgeAttributeNames.size(); ++a)
@@ -120,7 +120,7 @@ void write_reeb_graph_json(std::ostream& out, const std::string& mesh, const std
   json.field("cycles", cycles).field("leaves", leaves);
 
   json.key("skeleton").begin_array();
-  for (const CollectionEntry& e : components) {
+  for (const GraphRecord& e : components) {
     for (std::size_t n = 0; n + 1 < e.skeleton_offset.size(); ++n) {
       json.begin_array();
       for (auto p = e.skeleton_offset[n]; p < e.skeleton_offset[n + 1]; ++p) {
@@ -132,7 +132,7 @@ void write_reeb_graph_json(std::ostream& out, const std::string& mesh, const std
   }
   json.end_array();
   json.key("signature").begin_array();
-  for (const CollectionEntry& e : components) json.numbers(e.signature);
+  for (const GraphRecord& e : components) json.numbers(e.signature);
   json.end_array();
 
   json.key("timings_ms")
@@ -148,8 +148,8 @@ void write_reeb_graph_json(std::ostream& out, const std::string& mesh, const std
 
 void write_reeb_graph_json(const std::filesystem::path& path, const std::vector<MeshAnalysis>& components) {
   check_components("write_reeb_graph_json", components);
-  std::vector<CollectionEntry> entries;
-  for (const MeshAnalysis& r : components) entries.push_back(make_collection_entry(r, compute_attributes(r)));
+  std::vector<GraphRecord> entries;
+  for (const MeshAnalysis& r : components) entries.push_back(make_graph_record(r, compute_attributes(r)));
   std::ofstream out = open_for_writing(path);
   write_reeb_graph_json(out, components.front().mesh.source, entries);
   check_written(out, path);

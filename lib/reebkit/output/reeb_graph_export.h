@@ -10,8 +10,8 @@
 // named by their index in the file (Mesh::source_index).
 #pragma once
 
+#include "reebkit/attributes/graph_record.h"
 #include "reebkit/pipeline/analyze_mesh.h"
-#include "reebkit/store/collection_file.h"
 
 #include <filesystem>
 #include <ostream>
@@ -23,11 +23,11 @@ namespace reebkit {
 /// The graph as JSON: mesh, counts, feature points, nodes with their
 /// attributes, edges with theirs, cycles, leaves, skeleton, signature and
 /// step timings. Written from collection entries (one per component,
-/// make_collection_entry), so that `reeb graph` and `reeb export` (an entry
+/// make_graph_record), so that `reeb graph` and `reeb export` (an entry
 /// read back from a collection file) print the same document; `mesh` is the
 /// `mesh` field. Throws InvalidArgument when `components` is empty or a
 /// component is a failed entry.
-void write_reeb_graph_json(std::ostream& out, const std::string& mesh, const std::vector<CollectionEntry>& components);
+void write_reeb_graph_json(std::ostream& out, const std::string& mesh, const std::vector<GraphRecord>& components);
 /// The same from the analyses (with compute_attributes), into the file `path`.
 /// Throws as above, and Error naming the file when it cannot be written.
 void write_reeb_graph_json(const std::filesystem::path& path, const std::vector<MeshAnalysis>& components);

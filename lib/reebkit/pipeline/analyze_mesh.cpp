@@ -31,4 +31,9 @@ MeshAnalysis analyze_mesh(Mesh mesh, const AnalysisOptions& options) {
   return a;
 }
 
+GraphAttributes compute_attributes(const MeshAnalysis& analysis) {
+  return compute_attributes(analysis.mesh, analysis.graph, analysis.fq.value, analysis.features.diameter,
+                            analysis.reeb);
+}
+
 }  // namespace reebkit

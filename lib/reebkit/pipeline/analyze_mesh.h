@@ -1,8 +1,10 @@
 // The per-mesh pipeline of reebkit in one call: mesh graph -> feature points
-// -> quotient function f_q -> high-level Reeb graph, with the time of each step.
+// -> quotient function f_q -> high-level Reeb graph, with the time of each
+// step; then its attributes.
 // Tools and experiments compose this; each step stays callable on its own.
 #pragma once
 
+#include "reebkit/attributes/graph_attributes.h"
 #include "reebkit/features/feature_points.h"
 #include "reebkit/features/quotient_function.h"
 #include "reebkit/mesh/hole_filling.h"
@@ -42,5 +44,9 @@ struct MeshAnalysis {
 /// Runs the pipeline on a cleaned, connected mesh (see load_mesh).
 /// Throws InvalidArgument when the mesh graph is not connected.
 MeshAnalysis analyze_mesh(Mesh mesh, const AnalysisOptions& options = {});
+
+/// The attributes of the analysis's Reeb graph (graph_attributes.h).
+/// \pre analysis.reeb has been built (AnalysisOptions::reeb_graph).
+GraphAttributes compute_attributes(const MeshAnalysis& analysis);
 
 }  // namespace reebkit

@@ -8,12 +8,12 @@
 
 namespace reebkit {
 
-PairwiseDistances all_pairs_distances(const std::vector<CollectionEntry>& entries, const AllPairsOptions& options) {
+PairwiseDistances all_pairs_distances(const std::vector<GraphRecord>& entries, const AllPairsOptions& options) {
   if (options.threads < 0)
     throw InvalidArgument("all-pairs distances: threads " + std::to_string(options.threads) + " < 0");
   PairwiseDistances out;
   const std::int64_t n = static_cast<std::int64_t>(entries.size());
-  for (const CollectionEntry& e : entries) out.names.push_back(e.name);
+  for (const GraphRecord& e : entries) out.names.push_back(e.name);
   out.values.assign(static_cast<std::size_t>(n * n), 0.0);
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
   const std::vector<MatchableGraph> graphs = make_matchable_graphs(entries);  // once, not once per pair
@@ -64,8 +64,8 @@ std::vector<std::int64_t> matrix_rows(const CollectionReader& collection, const 
 
 PairwiseDistances all_pairs_distances(const CollectionReader& collection, const std::vector<std::int64_t>& rows,
                                    const AllPairsOptions& options) {
-  std::vector<CollectionEntry> all = collection.entries(0, collection.size());
-  std::vector<CollectionEntry> entries;
+  std::vector<GraphRecord> all = collection.entries(0, collection.size());
+  std::vector<GraphRecord> entries;
   entries.reserve(rows.size());
   for (const std::int64_t r : rows) entries.push_back(all.at(static_cast<std::size_t>(r)));
   return all_pairs_distances(entries, options);

@@ -5,7 +5,7 @@
 // symmetric by contract.
 #pragma once
 
-#include "reebkit/collection/psb_classes.h"
+#include "reebkit/io/psb_classes.h"
 #include "reebkit/matching/graph_matching.h"
 #include "reebkit/store/collection_file.h"
 
@@ -39,7 +39,7 @@ struct PairwiseDistances {
 /// order of `entries`: zero diagonal, symmetric, kFailedEntryDistance
 /// between a failed entry and any other. The same matrix whatever the
 /// number of threads. Throws InvalidArgument on threads < 0.
-PairwiseDistances all_pairs_distances(const std::vector<CollectionEntry>& entries, const AllPairsOptions& options = {});
+PairwiseDistances all_pairs_distances(const std::vector<GraphRecord>& entries, const AllPairsOptions& options = {});
 
 /// The rows of the matrix of a collection: every entry in collection order,
 /// or, given the classes of a .cla file, one row per model of the file in

@@ -19,7 +19,7 @@ SearchableCollection load_searchable(const CollectionReader& collection) {
   return searchable;
 }
 
-std::vector<QueryResult> query_collection(const SearchableCollection& collection, const CollectionEntry& query,
+std::vector<QueryResult> query_collection(const SearchableCollection& collection, const GraphRecord& query,
                                           const QueryOptions& options) {
   if (!query.ok) throw InvalidArgument("query '" + query.name + "' has no graph: " + query.error);
   if (options.k < 1 || options.candidates < 1 || options.threads < 0)
@@ -85,7 +85,7 @@ std::vector<QueryResult> query_collection(const SearchableCollection& collection
   std::vector<QueryResult> ranked;
   for (std::size_t c = 0; c < nearest.size(); ++c) {
     if (!matched[c]) continue;
-    const CollectionEntry& entry = collection.entries[static_cast<std::size_t>(nearest[c].row)];
+    const GraphRecord& entry = collection.entries[static_cast<std::size_t>(nearest[c].row)];
     ranked.push_back({nearest[c].row, entry.name, entry.class_label, distance[c], nearest[c].distance});
   }
   std::sort(ranked.begin(), ranked.end(), [](const QueryResult& a, const QueryResult& b) {
@@ -95,7 +95,7 @@ std::vector<QueryResult> query_collection(const SearchableCollection& collection
   return ranked;
 }
 
-std::vector<QueryResult> query_collection(const CollectionReader& collection, const CollectionEntry& query,
+std::vector<QueryResult> query_collection(const CollectionReader& collection, const GraphRecord& query,
                                           const QueryOptions& options) {
   return query_collection(load_searchable(collection), query, options);
 }

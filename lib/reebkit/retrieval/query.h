@@ -43,7 +43,7 @@ struct QueryResult {
 /// A collection held in memory for many queries: its entries, the index of
 /// their signatures and their graphs in matchable form.
 struct SearchableCollection {
-  std::vector<CollectionEntry> entries;
+  std::vector<GraphRecord> entries;
   SignatureIndex index;
   /// make_matchable_graph of each entry (an empty graph for a failed entry),
   /// built once instead of once per query and candidate: 3.6 KB per graph
@@ -63,11 +63,11 @@ SearchableCollection load_searchable(const CollectionReader& collection);
 /// distance 0 when it is the same graph). Throws InvalidArgument when the
 /// query has no graph, on k < 1, candidates < 1 or threads < 0, or when the
 /// index does not cover the entries. The same ranking whatever the number of threads.
-std::vector<QueryResult> query_collection(const SearchableCollection& collection, const CollectionEntry& query,
+std::vector<QueryResult> query_collection(const SearchableCollection& collection, const GraphRecord& query,
                                           const QueryOptions& options = {});
 
 /// The same for one query: load_searchable, then query_collection.
-std::vector<QueryResult> query_collection(const CollectionReader& collection, const CollectionEntry& query,
+std::vector<QueryResult> query_collection(const CollectionReader& collection, const GraphRecord& query,
                                           const QueryOptions& options = {});
 
 }  // namespace reebkit

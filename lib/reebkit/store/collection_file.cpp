@@ -275,7 +275,7 @@ void append_rows(Table& table, const std::vector<T>& values) {
   table.append(values.data(), values.size() / table.columns());
 }
 
-void check_entry(const CollectionEntry& e, const fs::path& path) {
+void check_entry(const GraphRecord& e, const fs::path& path) {
   const std::size_t n = static_cast<std::size_t>(e.num_nodes());
   const std::size_t m = static_cast<std::size_t>(e.num_edges());
   const auto expect = [&](bool ok, const char* what) {
@@ -378,7 +378,7 @@ OpenCollection open_collection(const fs::path& path) {
 }
 
 /// Entries [first, first + n) read with one call per dataset.
-std::vector<CollectionEntry> read_entries(const Tables& t, const Snapshot& s, std::int64_t first, std::int64_t n) {
+std::vector<GraphRecord> read_entries(const Tables& t, const Snapshot& s, std::int64_t first, std::int64_t n) {
   const auto f = static_cast<hsize_t>(first);
   const auto count = static_cast<hsize_t>(n);
   const auto node0 = s.node_offset[first], node1 = s.node_offset[first + n];
@@ -407,10 +407,10 @@ std::vector<CollectionEntry> read_entries(const Tables& t, const Snapshot& s, st
     using Vector = std::decay_t<decltype(v)>;
     return Vector(v.begin() + (a - base) * width, v.begin() + (b - base) * width);
   };
-  std::vector<CollectionEntry> out(static_cast<std::size_t>(n));
+  std::vector<GraphRecord> out(static_cast<std::size_t>(n));
   for (std::int64_t k = 0; k < n; ++k) {
     const std::int64_t i = first + k;
-    CollectionEntry& e = out[static_cast<std::size_t>(k)];
+    GraphRecord& e = out[static_cast<std::size_t>(k)];
     const auto sk = static_cast<std::size_t>(k);
     e.name = names[sk];
     e.class_label = labels[sk];
@@ -470,7 +470,7 @@ std::optional<std::int64_t> CollectionReader::find(const std::string& name) cons
   return it->second;
 }
 
-CollectionEntry CollectionReader::entry(std::int64_t i) const {
+GraphRecord CollectionReader::entry(std::int64_t i) const {
   if (i < 0 || i >= size())
     throw InvalidArgument(impl_->path.string() + ": entry " + std::to_string(i) + " out of range (the file holds " +
                           std::to_string(size()) + ")");
@@ -478,7 +478,7 @@ CollectionEntry CollectionReader::entry(std::int64_t i) const {
                  [&] { return std::move(read_entries(impl_->tables, impl_->snapshot, i, 1).front()); });
 }
 
-std::vector<CollectionEntry> CollectionReader::entries(std::int64_t first, std::int64_t count) const {
+std::vector<GraphRecord> CollectionReader::entries(std::int64_t first, std::int64_t count) const {
   if (first < 0 || count < 0 || first + count > size())
     throw InvalidArgument(impl_->path.string() + ": entries " + std::to_string(first) + " to " +
                           std::to_string(first + count - 1) + " out of range (the file holds " +
@@ -624,7 +624,7 @@ CollectionWriter::CollectionWriter(const fs::path& path, const Provenance& prove
     for (std::int64_t first = 0; first < n; first += static_cast<std::int64_t>(kBatchEntries)) {
       const std::int64_t count = std::min<std::int64_t>(static_cast<std::int64_t>(kBatchEntries), n - first);
       auto entries = guarded(path, "reading", [&] { return read_entries(old.tables, old.snapshot, first, count); });
-      for (CollectionEntry& e : entries) {
+      for (GraphRecord& e : entries) {
         w.existing.emplace_back(e.name, e.content_hash);
         append(std::move(e));
       }
@@ -650,7 +650,7 @@ const std::vector<std::pair<std::string, std::uint64_t>>& CollectionWriter::exis
 
 std::int64_t CollectionWriter::size() const { return impl_->written + impl_->buffered; }
 
-void CollectionWriter::append(CollectionEntry entry) {
+void CollectionWriter::append(GraphRecord entry) {
   Impl& w = *impl_;
   if (w.file.getId() == H5I_INVALID_HID) throw InvalidArgument(w.path.string() + ": append after close()");
   check_entry(entry, w.path);

@@ -1,28 +1,26 @@
-#include "reebkit/collection/collection_entry.h"
-
-#include "reebkit/core/timer.h"
-#include "reebkit/mesh/load_mesh.h"
+#include "reebkit/pipeline/mesh_record.h"
 
 #include "reebkit/core/error.h"
+#include "reebkit/core/timer.h"
 #include "reebkit/mesh/hole_filling.h"
+#include "reebkit/mesh/load_mesh.h"
 
 #include <limits>
-#include <numeric>
 
 namespace reebkit {
 
-CollectionEntry make_collection_entry(const MeshAnalysis& analysis, const GraphAttributes& attributes) {
+GraphRecord make_graph_record(const MeshAnalysis& analysis, const GraphAttributes& attributes) {
   const ReebGraph& reeb = analysis.reeb;
   const Mesh& mesh = analysis.mesh;
-  if (reeb.nodes.empty()) throw InvalidArgument("make_collection_entry: the analysis has no Reeb graph");
+  if (reeb.nodes.empty()) throw InvalidArgument("make_graph_record: the analysis has no Reeb graph");
   const auto n = static_cast<std::size_t>(reeb.num_nodes());
   const auto e = static_cast<std::size_t>(reeb.num_edges());
   if (attributes.node.size() != n * kNodeAttributeCount || attributes.edge.size() != e * kEdgeAttributeCount ||
       attributes.signature.size() != static_cast<std::size_t>(kSignatureLength))
-    throw InvalidArgument("make_collection_entry: the attributes do not match the graph (" + std::to_string(n) +
+    throw InvalidArgument("make_graph_record: the attributes do not match the graph (" + std::to_string(n) +
                           " nodes, " + std::to_string(e) + " edges)");
 
-  CollectionEntry out;
+  GraphRecord out;
   out.ok = true;
   const Index kept = original_vertex_count(mesh);
   out.vertices = kept;
@@ -51,8 +49,8 @@ CollectionEntry make_collection_entry(const MeshAnalysis& analysis, const GraphA
   return out;
 }
 
-CollectionEntry analyze_mesh_file(const std::filesystem::path& path, std::string name,
-                                  const AnalysisOptions& options) {
+GraphRecord analyze_mesh_file(const std::filesystem::path& path, std::string name,
+                              const AnalysisOptions& options) {
   Timer timer;
   CleanedMesh cleaned = load_mesh(path);
   const double load_ms = timer.lap();
@@ -60,50 +58,22 @@ CollectionEntry analyze_mesh_file(const std::filesystem::path& path, std::string
   timer.lap();
   const GraphAttributes attributes = compute_attributes(analysis);
   const double attributes_ms = timer.lap();
-  CollectionEntry entry = make_collection_entry(analysis, attributes);
+  GraphRecord entry = make_graph_record(analysis, attributes);
   entry.name = std::move(name);
   entry.timings[kTimeLoad] = load_ms;
   entry.timings[kTimeAttributes] = attributes_ms;
   return entry;
 }
 
-CollectionEntry failed_collection_entry(std::string name, std::string class_label, std::uint64_t content_hash,
-                                        std::string error) {
-  CollectionEntry out;
+GraphRecord failed_graph_record(std::string name, std::string class_label, std::uint64_t content_hash,
+                                std::string error) {
+  GraphRecord out;
   out.name = std::move(name);
   out.class_label = std::move(class_label);
   out.content_hash = content_hash;
   out.error = std::move(error);
   out.signature.assign(kSignatureLength, std::numeric_limits<double>::quiet_NaN());
   return out;
-}
-
-std::int64_t independent_cycles(const CollectionEntry& entry) {
-  // Union-find over the nodes counts the connected components.
-  std::vector<std::size_t> parent(static_cast<std::size_t>(entry.num_nodes()));
-  std::iota(parent.begin(), parent.end(), std::size_t{0});
-  const auto root = [&parent](std::size_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  std::int64_t components = entry.num_nodes();
-  for (std::size_t k = 0; k + 1 < entry.edges.size(); k += 2) {
-    const std::size_t a = root(static_cast<std::size_t>(entry.edges[k]));
-    const std::size_t b = root(static_cast<std::size_t>(entry.edges[k + 1]));
-    if (a != b) {
-      parent[a] = b;
-      --components;
-    }
-  }
-  return entry.num_edges() - entry.num_nodes() + components;
-}
-
-std::int64_t leaf_count(const CollectionEntry& entry) {
-  std::int64_t leaves = 0;
-  for (std::int32_t k = 0; k < entry.num_nodes(); ++k)
-    leaves += entry.nodes[static_cast<std::size_t>(k) * kNodeColumnCount + kNodeEnd] ==
-              static_cast<std::int32_t>(NodeType::Termination);
-  return leaves;
 }
 
 }  // namespace reebkit

@@ -1,4 +1,4 @@
-#include "reebkit/reeb/deformation.h"
+#include "reebkit/deform/deformation.h"
 
 #include "reeb/reeb_test_util.h"
 #include "reebkit/core/error.h"

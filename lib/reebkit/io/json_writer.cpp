@@ -1,4 +1,4 @@
-#include "reebkit/output/json_writer.h"
+#include "reebkit/io/json_writer.h"
 
 #include <charconv>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "reebkit/reeb/deformation.h"
+#include "reebkit/deform/deformation.h"
 
 #include "reebkit/core/error.h"
 #include "reebkit/geodesic/dijkstra.h"

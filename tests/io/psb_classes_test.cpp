@@ -1,4 +1,4 @@
-#include "reebkit/collection/psb_classes.h"
+#include "reebkit/io/psb_classes.h"
 
 #include "io/io_test_util.h"
 #include "reebkit/core/error.h"
