@@ -2,7 +2,7 @@
 // section 5.3: "those graphs can be extended with geometrical attributes and
 // shape comparison can be achieved with graph matching algorithms").
 //
-// Choices (README, "Graph attributes"):
+// Choices (docs/method.md, "Graph attributes"):
 // - Areas and vertex shares count the surface as read (original_surface):
 //   the fans fill_holes adds are left out. Geodesics, level lines and region
 //   borders run on the analyzed, hole-filled mesh, where level lines are

@@ -1,5 +1,5 @@
 // The HDF5 collection file: flat, extendible datasets with CSR offsets
-// (README, "The collection file").
+// (docs/collection-file.md).
 //
 // Crash consistency. The file is written in HDF5's single-writer /
 // multiple-reader (SWMR) mode (HDF5 >= 1.10, latest file format): the library

@@ -1,7 +1,7 @@
-// The HDF5 file of an indexed collection (issue 4): one record per mesh with
-// its attributed Reeb graph, in flat datasets with CSR offsets so that
-// Python (h5py + numpy) reads it without reebkit. Layout: README, "The
-// collection file". Written from one thread only.
+// The HDF5 file of an indexed collection: one record per mesh with its
+// attributed Reeb graph, in flat datasets with CSR offsets so that Python
+// (h5py + numpy) reads it without reebkit. Layout: docs/collection-file.md.
+// Written from one thread only.
 #pragma once
 
 #include "reebkit/attributes/graph_record.h"
