@@ -59,7 +59,6 @@ constexpr int kShapeSamples = 128;   // random points per region for kNodeShapeH
 constexpr double kShapeBinWidth = 0.2;  // of distance / sqrt(region area)
 constexpr int kGlobalShapeSamples = 512;       // random points of the whole surface for its D2
 constexpr double kGlobalShapeBinWidth = 0.15;  // of distance / sqrt(mesh area)
-constexpr int kSweeps = 1;           // Dijkstra runs per region piece for kNodeGeodesicExtent
 constexpr int kLeafSlots = 6;        // largest leaves listed in the signature
 constexpr int kAreaBins = 6;         // histogram of node relative areas
 constexpr int kEigenvalues = 8;      // normalized Laplacian eigenvalues 2 .. 9
