@@ -4,6 +4,7 @@
 
 #include "io/io_test_util.h"
 #include "reebkit/core/error.h"
+#include "support/test_support.h"
 
 #include <H5Cpp.h>
 #include <gtest/gtest.h>
@@ -231,6 +232,20 @@ TEST(CollectionFile, ErrorsNameTheFile) {
   const auto unwritable = dir / "no_such_folder" / "c.h5";
   EXPECT_TRUE(contains(error_message([&] { CollectionWriter w(unwritable, test_provenance(), false); }),
                        unwritable.string()));
+}
+
+TEST(CollectionFile, CorruptedFilesFoundByTheFuzzerFailAtOnceNamingTheFile) {
+  // Regressions of fuzz_collection: a hang (HDF5 retried SWMR metadata reads
+  // for minutes; the test's timeout catches one) and an error path of HDF5.
+  for (const char* name : {"store/corrupted_metadata.h5", "store/corrupted_superblock.h5"}) {
+    const std::filesystem::path path = test::fixture(name);
+    ASSERT_TRUE(std::filesystem::is_regular_file(path)) << path;
+    const std::string message = error_message([&] {
+      const CollectionReader reader(path);
+      (void)reader.entries(0, reader.size());
+    });
+    EXPECT_NE(message.find(path.string()), std::string::npos) << message;
+  }
 }
 
 TEST(CollectionFile, RejectsInconsistentEntries) {

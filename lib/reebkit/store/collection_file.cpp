@@ -318,6 +318,9 @@ struct Snapshot {
   Provenance provenance;
 };
 
+/// Metadata read attempts of a reader in SWMR mode (HDF5's default: 100).
+constexpr unsigned kSwmrReadAttempts = 4;
+
 H5::H5File open_for_reading(const fs::path& path) {
   if (!fs::exists(path)) fail(path, "no such file");
   if (H5Fis_hdf5(path.c_str()) <= 0) fail(path, "not an HDF5 file");
@@ -327,7 +330,15 @@ H5::H5File open_for_reading(const fs::path& path) {
     // A writer died with the file open: the superblock still says so, and
     // HDF5 opens such a file only in SWMR read mode (see the top of the file).
   }
-  return guarded(path, "opening", [&] { return H5::H5File(path.string(), H5F_ACC_RDONLY | H5F_ACC_SWMR_READ); });
+  // In SWMR read mode HDF5 retries a metadata read whose checksum fails,
+  // waiting longer each time (up to an hour in all): meant for a reader racing
+  // a live writer, it turns a corrupted file into a hang. A few quick
+  // attempts cover the race.
+  H5::FileAccPropList access;
+  H5Pset_metadata_read_attempts(access.getId(), kSwmrReadAttempts);
+  return guarded(path, "opening", [&] {
+    return H5::H5File(path.string(), H5F_ACC_RDONLY | H5F_ACC_SWMR_READ, H5::FileCreatPropList::DEFAULT, access);
+  });
 }
 
 int layout_version(const H5::H5File& file) {
