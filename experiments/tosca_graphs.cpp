@@ -37,9 +37,7 @@ GraphCounts count(const reebkit::MeshAnalysis& a) {
       a.features.vertices.begin(), a.features.vertices.end(),
       [&](Index v) { return a.mesh.source_index(v) == reebkit::kInvalidIndex; }));
   c.nodes = a.reeb.num_nodes();
-  c.leaves = static_cast<Index>(std::count_if(a.reeb.nodes.begin(), a.reeb.nodes.end(), [](const reebkit::ReebNode& n) {
-    return n.end == reebkit::NodeType::Termination;
-  }));
+  c.leaves = a.reeb.leaf_count();
   c.cycles = a.reeb.independent_cycles();
   return c;
 }

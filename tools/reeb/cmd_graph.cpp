@@ -26,10 +26,8 @@ void print_summary(const std::vector<MeshAnalysis>& results) {
     vertices += r.mesh.num_vertices();
     features += static_cast<Index>(r.features.vertices.size());
     cycles += r.reeb.independent_cycles();
-    for (const ReebNode& n : r.reeb.nodes) {
-      ++count[static_cast<int>(n.type)];
-      leaves += n.end == NodeType::Termination;
-    }
+    leaves += r.reeb.leaf_count();
+    for (const ReebNode& n : r.reeb.nodes) ++count[static_cast<int>(n.type)];
     time.graph += r.timings.graph;
     time.features += r.timings.features;
     time.quotient += r.timings.quotient;

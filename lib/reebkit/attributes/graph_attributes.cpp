@@ -404,7 +404,7 @@ GraphAttributes compute_attributes(const Mesh& mesh, const MeshGraph& graph, con
     return static_cast<Index>(std::count_if(reeb.nodes.begin(), reeb.nodes.end(), predicate));
   };
   sig[kSigCounts + 0] = scaled_count(reeb.num_nodes());
-  sig[kSigCounts + 1] = scaled_count(count_if([](const ReebNode& n) { return n.end == NodeType::Termination; }));
+  sig[kSigCounts + 1] = scaled_count(reeb.leaf_count());
   sig[kSigCounts + 2] = scaled_count(count_if([](const ReebNode& n) { return n.type == NodeType::Bifurcation; }));
   sig[kSigCounts + 3] = scaled_count(count_if([](const ReebNode& n) { return n.type == NodeType::Junction; }));
   sig[kSigCounts + 4] = scaled_count(reeb.independent_cycles());
