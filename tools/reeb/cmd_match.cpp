@@ -4,6 +4,7 @@
 #include "reeb/cli.h"
 #include "reebkit/core/error.h"
 #include "reebkit/matching/graph_matching.h"
+#include "reebkit/output/obj_lines.h"
 #include "reebkit/pipeline/mesh_record.h"
 #include "reebkit/reeb/reeb_graph.h"
 #include "reebkit/store/collection_file.h"
@@ -91,28 +92,30 @@ void write_obj(const std::string& path, const GraphRecord& a, const GraphRecord&
   if (!out) throw Error(path + ": cannot open for writing");
   const Box ba = x_range(a), bb = x_range(b);
   const double shift = ba[1] - bb[0] + 0.5 * (ba[1] - ba[0]);
-  out << "# reeb match " << a.name << " " << b.name << ": distance " << match.distance << "\n"
-      << "# vertices: node barycenters of A, then of B (shifted by " << shift << " along x)\n";
+  std::ostringstream title, vertices_note;
+  title << "reeb match " << a.name << " " << b.name << ": distance " << match.distance;
+  vertices_note << "vertices: node barycenters of A, then of B (shifted by " << shift << " along x)";
+  ObjLinesWriter obj(out);
+  obj.comment(title.str()).comment(vertices_note.str());
   const auto vertices = [&](const GraphRecord& e, double dx) {
     for (std::size_t i = 0; i < static_cast<std::size_t>(e.num_nodes()); ++i) {
       const double* g = &e.node_geometry[i * kGeomColumnCount];
-      out << "v " << g[kGeomBarycenterX] + dx << " " << g[kGeomBarycenterY] << " " << g[kGeomBarycenterZ] << "\n";
+      obj.point(Vec3(g[kGeomBarycenterX] + dx, g[kGeomBarycenterY], g[kGeomBarycenterZ]));
     }
   };
   vertices(a, 0.0);
   vertices(b, shift);
-  const auto edges = [&](const char* name, const GraphRecord& e, std::int32_t first) {
-    out << "o " << name << "\n";
-    for (std::int32_t k = 0; k < e.num_edges(); ++k)
-      out << "l " << first + e.edges[2 * static_cast<std::size_t>(k)] << " "
-          << first + e.edges[2 * static_cast<std::size_t>(k) + 1] << "\n";
+  const auto edges = [&](const char* name, const GraphRecord& e, Index first) {
+    obj.object(name);
+    for (std::size_t k = 0; k < static_cast<std::size_t>(e.num_edges()); ++k)
+      obj.line({first + e.edges[2 * k], first + e.edges[2 * k + 1]});
   };
   edges("graph_a", a, 1);
   edges("graph_b", b, 1 + a.num_nodes());
-  out << "o correspondence\n";
+  obj.object("correspondence");
   for (std::int32_t i = 0; i < a.num_nodes(); ++i) {
     const std::int32_t j = match.correspondence[static_cast<std::size_t>(i)];
-    if (j >= 0) out << "l " << 1 + i << " " << 1 + a.num_nodes() + j << "\n";
+    if (j >= 0) obj.line({1 + i, 1 + a.num_nodes() + j});
   }
   if (!out) throw Error(path + ": write failed");
 }
