@@ -2,6 +2,7 @@
 
 #include "io/io_test_util.h"
 #include "reebkit/core/error.h"
+#include "support/test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -19,17 +20,6 @@ std::vector<std::string> names(const std::vector<MeshInput>& inputs) {
   std::vector<std::string> out;
   for (const MeshInput& m : inputs) out.push_back(m.name);
   return out;
-}
-
-/// The message of the InvalidArgument `f` throws ("" when none).
-template <typename F>
-std::string argument_error(F&& f) {
-  try {
-    f();
-  } catch (const InvalidArgument& e) {
-    return e.what();
-  }
-  return "";
 }
 
 TEST(NaturalOrder, DigitRunsCompareByValue) {
@@ -110,7 +100,7 @@ TEST(MeshInputs, MissingPathsAreAllNamedWithTheListLine) {
   touch(dir / "ok.off");
   std::ofstream(dir / "list.lst") << "ok.off\n# comment\ngone.off\n";
   const std::string message =
-      argument_error([&] { list_mesh_inputs({(dir / "list.lst").string(), (dir / "nowhere").string()}); });
+      thrown_message<InvalidArgument>([&] { list_mesh_inputs({(dir / "list.lst").string(), (dir / "nowhere").string()}); });
   EXPECT_NE(message.find("missing inputs"), std::string::npos) << message;
   EXPECT_NE(message.find((dir / "list.lst").string() + ":3: "), std::string::npos) << message;
   EXPECT_NE(message.find((dir / "nowhere").string()), std::string::npos) << message;
@@ -121,10 +111,10 @@ TEST(MeshInputs, DuplicateNamesAndUnknownKindsAreErrors) {
   touch(dir / "one/x.off");
   touch(dir / "two/x.off");
   touch(dir / "data.csv");
-  const std::string twice = argument_error([&] { list_mesh_inputs({(dir / "one").string(), (dir / "two").string()}); });
+  const std::string twice = thrown_message<InvalidArgument>([&] { list_mesh_inputs({(dir / "one").string(), (dir / "two").string()}); });
   EXPECT_NE(twice.find("two meshes named 'x.off'"), std::string::npos) << twice;
   EXPECT_NE(twice.find((dir / "two" / "x.off").string()), std::string::npos) << twice;
-  const std::string kind = argument_error([&] { list_mesh_inputs({(dir / "data.csv").string()}); });
+  const std::string kind = thrown_message<InvalidArgument>([&] { list_mesh_inputs({(dir / "data.csv").string()}); });
   EXPECT_NE(kind.find("data.csv: not a folder"), std::string::npos) << kind;
 }
 

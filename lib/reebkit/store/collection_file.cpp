@@ -1,5 +1,5 @@
 // The HDF5 collection file: flat, extendible datasets with CSR offsets
-// (README, "The collection file").
+// (docs/collection-file.md).
 //
 // Crash consistency. The file is written in HDF5's single-writer /
 // multiple-reader (SWMR) mode (HDF5 >= 1.10, latest file format): the library
@@ -144,6 +144,125 @@ std::string read_string_attribute(const H5::H5Object& object, const char* name) 
   std::string value;
   attribute.read(attribute.getStrType(), value);
   return value;
+}
+
+/// A named option as a typed scalar attribute of `group`: int64, float64 or a UTF-8 string.
+void write_option_attribute(H5::Group& group, const NamedOption& option) {
+  const H5::DataSpace scalar(H5S_SCALAR);
+  if (const auto* integer = std::get_if<std::int64_t>(&option.value))
+    group.createAttribute(option.name, H5::PredType::NATIVE_INT64, scalar).write(H5::PredType::NATIVE_INT64, integer);
+  else if (const auto* number = std::get_if<double>(&option.value))
+    group.createAttribute(option.name, H5::PredType::NATIVE_DOUBLE, scalar).write(H5::PredType::NATIVE_DOUBLE, number);
+  else
+    write_string_attribute(group, option.name.c_str(), std::get<std::string>(option.value));
+}
+
+/// Every attribute of the group `name` as a named option (none when the group is absent).
+std::vector<NamedOption> read_option_attributes(const H5::H5File& file, const char* name) {
+  std::vector<NamedOption> out;
+  if (!file.nameExists(name)) return out;
+  const H5::Group group = file.openGroup(name);
+  for (int i = 0; i < group.getNumAttrs(); ++i) {
+    const H5::Attribute attribute = group.openAttribute(static_cast<unsigned>(i));
+    NamedOption option{attribute.getName(), {}};
+    switch (attribute.getTypeClass()) {
+      case H5T_INTEGER: {
+        std::int64_t value = 0;
+        attribute.read(H5::PredType::NATIVE_INT64, &value);
+        option.value = value;
+        break;
+      }
+      case H5T_FLOAT: {
+        double value = 0;
+        attribute.read(H5::PredType::NATIVE_DOUBLE, &value);
+        option.value = value;
+        break;
+      }
+      case H5T_STRING: {
+        std::string value;
+        attribute.read(attribute.getStrType(), value);
+        option.value = value;
+        break;
+      }
+      default:
+        throw H5::AttributeIException("read_option_attributes", std::string(name) + "/" + option.name +
+                                                                    " is not an integer, a number or a string");
+    }
+    out.push_back(std::move(option));
+  }
+  return out;
+}
+
+/// A fixed one-dimensional dataset of `group` holding `values`.
+void write_strings(H5::Group& group, const char* name, const std::vector<std::string>& values) {
+  const H5::StrType type = utf8_string_type();
+  const hsize_t dims[1] = {values.size()};
+  std::vector<const char*> raw;
+  for (const std::string& v : values) raw.push_back(v.c_str());
+  group.createDataSet(name, type, H5::DataSpace(1, dims)).write(raw.data(), type);
+}
+
+void write_int64s(H5::Group& group, const char* name, const std::vector<std::int64_t>& values) {
+  const hsize_t dims[1] = {values.size()};
+  group.createDataSet(name, H5::PredType::NATIVE_INT64, H5::DataSpace(1, dims))
+      .write(values.data(), H5::PredType::NATIVE_INT64);
+}
+
+std::vector<std::string> read_strings(const H5::Group& group, const char* name) {
+  const H5::DataSet dataset = group.openDataSet(name);
+  hsize_t n = 0;
+  dataset.getSpace().getSimpleExtentDims(&n);
+  std::vector<char*> raw(static_cast<std::size_t>(n), nullptr);
+  if (n == 0) return {};
+  const H5::StrType type = utf8_string_type();
+  dataset.read(raw.data(), type);
+  std::vector<std::string> out(raw.begin(), raw.end());
+  H5::DataSet::vlenReclaim(raw.data(), type, dataset.getSpace());
+  return out;
+}
+
+std::vector<std::int64_t> read_int64s(const H5::Group& group, const char* name) {
+  const H5::DataSet dataset = group.openDataSet(name);
+  hsize_t n = 0;
+  dataset.getSpace().getSimpleExtentDims(&n);
+  std::vector<std::int64_t> out(static_cast<std::size_t>(n));
+  if (n > 0) dataset.read(out.data(), H5::PredType::NATIVE_INT64);
+  return out;
+}
+
+/// The group `classes`: `name`, `parent` (C,) and `model_offset` (C + 1,):
+/// class c lists the rows [model_offset[c], model_offset[c + 1]) of `model`
+/// (M,), in .cla order; the attribute `file` names the .cla file.
+void write_classes(H5::H5File& file, const std::vector<PsbClass>& classes, const std::string& source) {
+  H5::Group group = file.createGroup("classes");
+  std::vector<std::string> names, parents, models;
+  std::vector<std::int64_t> offset = {0};
+  for (const PsbClass& c : classes) {
+    names.push_back(c.name);
+    parents.push_back(c.parent);
+    models.insert(models.end(), c.models.begin(), c.models.end());
+    offset.push_back(static_cast<std::int64_t>(models.size()));
+  }
+  write_strings(group, "name", names);
+  write_strings(group, "parent", parents);
+  write_int64s(group, "model_offset", offset);
+  write_strings(group, "model", models);
+  write_string_attribute(group, "file", source);
+}
+
+void read_classes(const H5::H5File& file, Provenance& provenance) {
+  if (!file.nameExists("classes")) return;
+  const H5::Group group = file.openGroup("classes");
+  const std::vector<std::string> names = read_strings(group, "name"), parents = read_strings(group, "parent"),
+                                 models = read_strings(group, "model");
+  const std::vector<std::int64_t> offset = read_int64s(group, "model_offset");
+  if (offset.size() != names.size() + 1 || parents.size() != names.size() || offset.front() != 0 ||
+      offset.back() != static_cast<std::int64_t>(models.size()) || !std::is_sorted(offset.begin(), offset.end()))
+    throw H5::GroupIException("read_classes", "the classes group is inconsistent");
+  for (std::size_t c = 0; c < names.size(); ++c)
+    provenance.classes.push_back({names[c], parents[c],
+                                  std::vector<std::string>(models.begin() + offset[c], models.begin() + offset[c + 1])});
+  provenance.classes_file = read_string_attribute(group, "file");
 }
 
 template <std::size_t N>
@@ -352,6 +471,8 @@ Snapshot read_snapshot(const H5::H5File& file, const Tables& t) {
   s.provenance.options = read_string_attribute(file, "options");
   s.provenance.command = read_string_attribute(file, "command");
   s.provenance.created = read_string_attribute(file, "created");
+  s.provenance.analysis_options = read_option_attributes(file, "analysis_options");
+  read_classes(file, s.provenance);
   return s;
 }
 
@@ -369,7 +490,7 @@ OpenCollection open_collection(const fs::path& path) {
   if (version != kCollectionLayoutVersion)
     fail(path, version < 0 ? "not a reebkit collection file (no `layout` attribute)"
                            : "collection layout version " + std::to_string(version) + ", this reebkit reads " +
-                                 std::to_string(kCollectionLayoutVersion));
+                                 std::to_string(kCollectionLayoutVersion) + ": re-index the meshes with this version");
   guarded(path, "reading", [&] {
     c.tables = open_tables(c.file);
     c.snapshot = read_snapshot(c.file, c.tables);
@@ -543,6 +664,9 @@ void CollectionWriter::Impl::create(const fs::path& target, const Provenance& pr
   write_string_attribute(file, "options", provenance.options);
   write_string_attribute(file, "command", provenance.command);
   write_string_attribute(file, "created", provenance.created.empty() ? utc_now() : provenance.created);
+  H5::Group analysis = file.createGroup("analysis_options");
+  for (const NamedOption& option : provenance.analysis_options) write_option_attribute(analysis, option);
+  if (!provenance.classes.empty()) write_classes(file, provenance.classes, provenance.classes_file);
 
   for (const TableSpec& spec : table_specs()) {
     Table& t = tables.*spec.member;
