@@ -1,4 +1,4 @@
-// Geodesics and feature points: the speed figures of the README.
+// Geodesics and feature points: the speed figures of docs/benchmarks.md.
 //
 //   build/bench/features_bench [--benchmark_filter=...]
 //

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# reeb index benchmark (README, "Indexing a collection"):
+# reeb index benchmark (docs/command-line.md, "Indexing a collection"):
 #  1. all 400 SHREC 2007 meshes with their .cla, 1 then 2 threads: wall and
 #     CPU time, speed-up, share of the time spent writing the HDF5 file;
 #  2. memory: peak RSS indexing 1,000, 5,000 and 10,000 generated small

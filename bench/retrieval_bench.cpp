@@ -1,4 +1,4 @@
-// Retrieval speed (issue 5 targets): all-pairs graph-matching distances of an
+// Retrieval speed: all-pairs graph-matching distances of an
 // indexed collection with 1 and 2 threads (target for SHREC07's 400 graphs:
 // <= 5 s on 2 cores), and one query against a 10,000-graph collection after
 // the query's own graph is extracted (target <= 20 ms). The large collection

@@ -305,6 +305,15 @@ TEST(CleanMesh, EmptySoupsAreErrors) {
             "repeated vertex)");
 }
 
+TEST(CleanMesh, TrianglesOfZeroTotalAreaAreAnError) {
+  // Distinct vertex ids, but every triangle's corners on one line.
+  EXPECT_EQ(message_of(make_soup({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}}, {{0, 1, 2}, {1, 2, 3}}, "line.off")),
+            "line.off: no surface: the vertices of every one of its 2 triangles are collinear (zero area, degenerate)");
+  // One flat triangle in a surface is kept.
+  const CleanedMesh kept = clean_mesh(make_soup({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {2, 0, 0}}, {{0, 1, 2}, {0, 1, 3}}));
+  EXPECT_EQ(kept.components.front().num_triangles(), 2);
+}
+
 TEST(CleanMesh, IndexOutOfRangeIsAnError) {
   EXPECT_EQ(message_of(make_soup({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 2, 3}})),
             "soup.off: polygon 1 refers to vertex 3, but there are 3 vertices");

@@ -1,6 +1,6 @@
 // reeb distances collection.h5 -o dist.matrix: graph-matching distances
 // between every pair of meshes of a collection, as the Princeton Shape
-// Benchmark binary matrix and optionally the SHREC ASCII matrix (README,
+// Benchmark binary matrix and optionally the SHREC ASCII matrix (docs/command-line.md,
 // "Query and distances").
 #include "reeb/cli.h"
 #include "reebkit/core/error.h"

@@ -1,5 +1,5 @@
 // reeb export collection.h5 NAME --json: one graph of a collection file as
-// the JSON document of `reeb graph` (README, "reeb graph JSON schema").
+// the JSON document of `reeb graph` (docs/formats.md).
 #include "reeb/cli.h"
 #include "reebkit/core/error.h"
 #include "reebkit/output/reeb_graph_export.h"

@@ -67,7 +67,7 @@ int run_graph(const std::vector<std::string>& args) {
   bool all_components = false;
   options.add_options()
       ("mesh", po::value(&mesh_path)->required(), "mesh file (.off .obj .ply .stl)")
-      ("output,o", po::value(&json_path)->required(), "write the graph as JSON (see README, reeb graph JSON schema)")
+      ("output,o", po::value(&json_path)->required(), "write the graph as JSON (schema: docs/formats.md)")
       ("ply", po::value(&ply_path), "write the mesh colored by segment, with node and fq vertex properties")
       ("obj", po::value(&obj_path), "write the graph and its skeleton as OBJ lines")
       ("png", po::value(&png_path), "render the segmentation with the skeleton to a PNG (needs /usr/bin/python3)");

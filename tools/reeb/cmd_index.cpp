@@ -1,5 +1,5 @@
 // reeb index INPUT... -o collection.h5: the attributed Reeb graph of every
-// mesh of a collection in one HDF5 file (README, "Indexing a collection").
+// mesh of a collection in one HDF5 file (docs/command-line.md, "Indexing a collection").
 #include "reeb/cli.h"
 #include "reebkit/collection/extract_collection.h"
 

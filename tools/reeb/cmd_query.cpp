@@ -1,6 +1,6 @@
 // reeb query collection.h5 MESH_OR_NAME: the meshes of a collection nearest
 // to a query, pre-filtered by graph signature (FLANN, exact) and reranked by
-// graph matching (README, "Query and distances").
+// graph matching (docs/command-line.md, "Query and distances").
 #include "reeb/cli.h"
 #include "reebkit/core/error.h"
 #include "reebkit/core/timer.h"

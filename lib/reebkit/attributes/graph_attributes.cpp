@@ -2,7 +2,7 @@
 // section 5.3: "those graphs can be extended with geometrical attributes and
 // shape comparison can be achieved with graph matching algorithms").
 //
-// Choices (README, "Graph attributes"):
+// Choices (docs/method.md, "Graph attributes"):
 // - Areas and vertex shares count the surface as read (original_surface):
 //   the fans fill_holes adds are left out. Geodesics, level lines and region
 //   borders run on the analyzed, hole-filled mesh, where level lines are
@@ -59,7 +59,6 @@ constexpr int kShapeSamples = 128;   // random points per region for kNodeShapeH
 constexpr double kShapeBinWidth = 0.2;  // of distance / sqrt(region area)
 constexpr int kGlobalShapeSamples = 512;       // random points of the whole surface for its D2
 constexpr double kGlobalShapeBinWidth = 0.15;  // of distance / sqrt(mesh area)
-constexpr int kSweeps = 1;           // Dijkstra runs per region piece for kNodeGeodesicExtent
 constexpr int kLeafSlots = 6;        // largest leaves listed in the signature
 constexpr int kAreaBins = 6;         // histogram of node relative areas
 constexpr int kEigenvalues = 8;      // normalized Laplacian eigenvalues 2 .. 9

@@ -1,5 +1,5 @@
 // Geometric attributes of a high-level Reeb graph, for matching graphs of
-// different meshes (issue 4). Every attribute is invariant to rotation,
+// different meshes. Every attribute is invariant to rotation,
 // translation and uniform scale (lengths are relative to sqrt(mesh area) or
 // to the geodesic diameter, areas to the mesh area), and chosen to be as
 // stable as possible under pose (geodesic rather than Euclidean quantities)

@@ -14,7 +14,7 @@
 
 namespace reebkit {
 
-/// Columns of the node attributes (GraphRecord::node_attributes), in order (README: attribute table).
+/// Columns of the node attributes (GraphRecord::node_attributes), in order (docs/method.md, "Graph attributes").
 enum NodeAttribute : int {
   kNodeRelativeArea,      ///< region area / mesh area
   kNodeFqMin,             ///< smallest f_q over the region

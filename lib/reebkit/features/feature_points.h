@@ -27,11 +27,11 @@ struct FeatureOptions {
   /// ends found so far), to find the true diameter more often.
   int extra_seeds = 1;
   /// How every geodesic distance of the step is computed: the diameter
-  /// search, f1, f2 and the epsilon balls. Dijkstra (the default, which the
-  /// pinned test figures were measured with) follows mesh edges, whose
-  /// zig-zag error oscillates at the scale of the sampling and adds spurious
-  /// extrema on a resampled mesh; FastMarching crosses triangles and
-  /// converges to the surface's distance (results/sampling_stability.md).
+  /// search, f1, f2 and the epsilon balls. Dijkstra (the default) follows
+  /// mesh edges, whose zig-zag error oscillates at the scale of the sampling
+  /// and adds spurious extrema on a resampled mesh; FastMarching crosses
+  /// triangles and converges to the surface's distance
+  /// (results/sampling_stability.md).
   Geodesic geodesic = Geodesic::Dijkstra;
   /// Extrema of f1 and f2 whose topological persistence (features/
   /// persistence.h: how far f must change around one before it merges into a
@@ -39,11 +39,9 @@ struct FeatureOptions {
   /// E1 and E2 before the relaxed intersection; 0 = the paper's rule, every
   /// local extremum. Against the shallow extrema that a resampling adds
   /// along the ridges where two geodesic fronts meet; a protrusion shorter
-  /// than the threshold (fingers, claws) is dropped with them. 0.01 (measured
-  /// in results/sampling_stability.md against 0, 0.02, 0.05): resampled
-  /// copies keep the feature count 179 times in 216 instead of 51, SHREC07
-  /// retrieval FT 0.604 instead of 0.564, features + f_q at 100k faces 32.1
-  /// ms instead of 30.5. In [0, 1].
+  /// than the threshold (fingers, claws) is dropped with them. The default
+  /// 0.01 and its measured effect on stability and retrieval: docs/results.md,
+  /// "Sampling stability". In [0, 1].
   double min_persistence = 0.01;
 };
 

@@ -1,5 +1,5 @@
 // Distance between two attributed Reeb graphs by attribute-based graph
-// matching (issue 5): node-to-node costs from attribute differences and local
+// matching: node-to-node costs from attribute differences and local
 // structure, node insertion/deletion costs, solved as an assignment problem
 // (matching/assignment.h) on the padded matrix, optionally refined for edge
 // consistency.
@@ -12,7 +12,7 @@
 
 namespace reebkit {
 
-/// The cost model (README: "Graph matching"). A node i carries the weight
+/// The cost model (docs/method.md, "Graph matching"). A node i carries the weight
 /// w_i = relative area + min_node_weight. Matching node i of A to node j of
 /// B costs (w_i + w_j) / 2 * (attribute_weight * a(i, j) + structure_weight
 /// * s(i, j) + edge_weight * e(i, j) + profile_weight * p(i, j) +

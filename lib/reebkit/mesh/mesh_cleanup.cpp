@@ -309,6 +309,12 @@ CleanedMesh clean_mesh(const PolygonSoup& soup, const CleanupOptions& options) {
                               " (same vertices as an earlier triangle)");
 
   Mesh mesh = compact_mesh(soup, triangles);
+  double surface_area = 0.0;
+  for (Index t = 0; t < mesh.num_triangles(); ++t) surface_area += triangle_area(mesh, t);
+  if (!(surface_area > 0.0))
+    throw InvalidMeshError(soup.source, "no surface: the vertices of every one of its " +
+                                            count_of(mesh.num_triangles(), "triangle are", "triangles are") +
+                                            " collinear (zero area, degenerate)");
   report.unreferenced_vertices_dropped =
       report.input_vertices - report.coincident_vertices_merged - mesh.num_vertices();
 

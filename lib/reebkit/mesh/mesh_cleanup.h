@@ -55,8 +55,8 @@ struct CleanedMesh {
 
 /// Cleans `soup`:
 /// - a non-finite coordinate, a vertex index outside the soup, no vertices,
-///   no polygons, or no usable triangle throw InvalidMeshError naming
-///   soup.source and the problem;
+///   no polygons, no usable triangle, or triangles of zero total area (every
+///   one flat) throw InvalidMeshError naming soup.source and the problem;
 /// - (optional) coincident vertices are welded;
 /// - consecutive repeats in a polygon are collapsed; a polygon left with fewer
 ///   than 3 vertices or with a repeated vertex is dropped as degenerate;

@@ -1,5 +1,5 @@
 // The Reeb graph of a mesh in files for people and other tools: a JSON
-// document of the graph (schema in README.md, "reeb graph JSON schema"), the
+// document of the graph (schema in docs/formats.md), the
 // segmentation as a colored PLY, and the graph and its topological skeleton
 // (Tierny et al. 2006, section 5.2, figures 9 and 10a) as OBJ lines.
 //

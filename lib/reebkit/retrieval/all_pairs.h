@@ -1,4 +1,4 @@
-// All-pairs distances of a collection (issue 5, `reeb distances`): the
+// All-pairs distances of a collection (`reeb distances`): the
 // N x N matrix of graph-matching distances that retrieval evaluation (PSB
 // measures, precision-recall) reads. Only the pairs i < j are matched, in
 // parallel (OpenMP, dynamic schedule), and mirrored: match_graphs is

@@ -1,4 +1,4 @@
-// Query by example (issue 5): the entries of a collection nearest to a query
+// Query by example: the entries of a collection nearest to a query
 // graph. The `candidates` entries whose signatures are nearest to the query's
 // (SignatureIndex) are reranked by attribute-based graph matching
 // (match_graphs) and the best `k` returned. With candidates >= the number of
@@ -19,11 +19,9 @@ struct QueryOptions {
   int k = 10;             ///< results returned; >= 1
   int candidates = 100;   ///< nearest signatures reranked by graph matching (at least k); >= 1
   /// OpenMP threads bounding and matching the candidates; 0 =
-  /// omp_get_max_threads(). One by default: a typical query takes 0.5 ms and
-  /// the slowest of bench/retrieval_bench (a 113-node graph) 12 ms on one
-  /// thread; with a free core two threads take that to 9 ms, but on a busy
-  /// machine a query's second thread waits for a core (median 16 ms with two
-  /// threads at load 3 on 2 cores).
+  /// omp_get_max_threads(). One by default: a query is short, and on a busy
+  /// machine its second thread waits for a core (docs/benchmarks.md, "Query
+  /// and all-pairs distances").
   int threads = 1;
   /// Match the candidates by increasing match_lower_bound and skip those
   /// whose bound is above the k-th best distance found so far: the same
@@ -46,10 +44,8 @@ struct SearchableCollection {
   std::vector<GraphRecord> entries;
   SignatureIndex index;
   /// make_matchable_graph of each entry (an empty graph for a failed entry),
-  /// built once instead of once per query and candidate: 3.6 KB per graph
-  /// on SHREC07 as allocated (36 MB for 10,000 graphs of 3 to 113 nodes,
-  /// 28 MB of it the node features, 3.5 MB the dense n x n adjacency, kept:
-  /// it is the fastest edge test).
+  /// built once instead of once per query and candidate (its memory per
+  /// graph: docs/benchmarks.md).
   std::vector<MatchableGraph> graphs;
 };
 

@@ -1,4 +1,4 @@
-// Nearest neighbours among graph signatures (issue 5): the pre-filter of
+// Nearest neighbours among graph signatures: the pre-filter of
 // query by example. Each entry of a collection has a fixed-length signature
 // (attributes/graph_attributes.h, kSignatureLength entries in [0,1]); the
 // candidates for graph matching are the entries whose signatures are nearest

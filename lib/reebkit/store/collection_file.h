@@ -1,7 +1,7 @@
-// The HDF5 file of an indexed collection (issue 4): one record per mesh with
-// its attributed Reeb graph, in flat datasets with CSR offsets so that
-// Python (h5py + numpy) reads it without reebkit, and where it came from:
-// the analysis options (named, typed), the classes and the command. Layout:
+// The HDF5 file of an indexed collection: one record per mesh with its
+// attributed Reeb graph, in flat datasets with CSR offsets so that Python
+// (h5py + numpy) reads it without reebkit, and where it came from: the
+// analysis options (named, typed), the classes and the command. Layout:
 // docs/collection-file.md. Written from one thread only.
 #pragma once
 
