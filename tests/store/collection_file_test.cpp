@@ -169,6 +169,15 @@ TEST(CollectionFile, EmptyCollection) {
   EXPECT_EQ(reader.size(), 0);
   EXPECT_TRUE(reader.names().empty());
   EXPECT_TRUE(reader.signatures().empty());
+  // No analysis options and one class without models: empty arrays read back.
+  Provenance bare;
+  bare.classes = {{"none", "0", {}}};
+  CollectionWriter(dir / "bare.h5", bare, false).close();
+  const CollectionReader bare_reader(dir / "bare.h5");
+  EXPECT_TRUE(bare_reader.provenance().analysis_options.empty());
+  ASSERT_EQ(bare_reader.provenance().classes.size(), 1u);
+  EXPECT_EQ(bare_reader.provenance().classes[0].name, "none");
+  EXPECT_TRUE(bare_reader.provenance().classes[0].models.empty());
 }
 
 TEST(CollectionFile, ResumeKeepsOldEntriesAndAppends) {
@@ -279,11 +288,11 @@ with h5py.File(sys.argv[1], "r", libver="latest", swmr=True) as f:
     emit("command", [f.attrs["command"]])
     for key, value in sorted(f["analysis_options"].attrs.items()):
         emit("analysis_options/" + key, [type(value.item() if hasattr(value, "item") else value).__name__, value])
-    classes = f["classes"]
-    offset = classes["model_offset"][:]
-    for c, name in enumerate(classes["name"].asstr()[:]):
-        emit("classes/" + name, [classes["parent"].asstr()[c]] + list(classes["model"].asstr()[offset[c]:offset[c + 1]]))
-    emit("classes_file", [classes.attrs["file"]])
+    classes = f["classes"].attrs
+    offset, model = classes["model_offset"], classes["model"]
+    for c, name in enumerate(classes["name"]):
+        emit("classes/" + name, [classes["parent"][c]] + list(model[offset[c]:offset[c + 1]]))
+    emit("classes_file", [classes["file"]])
     emit("count", [G])
     for key in ("timings", "signature", "nodes", "node_geometry", "node_attr", "edges", "edge_attr", "skeleton_points"):
         emit("columns/" + key, [c.decode() if isinstance(c, bytes) else c for c in f[key].attrs["columns"]])

@@ -193,69 +193,59 @@ std::vector<NamedOption> read_option_attributes(const H5::H5File& file, const ch
   return out;
 }
 
-/// A fixed one-dimensional dataset of `group` holding `values`.
-void write_strings(H5::Group& group, const char* name, const std::vector<std::string>& values) {
+/// A one-dimensional attribute of UTF-8 strings.
+void write_strings_attribute(H5::H5Object& object, const char* name, const std::vector<const char*>& values) {
   const H5::StrType type = utf8_string_type();
   const hsize_t dims[1] = {values.size()};
-  std::vector<const char*> raw;
-  for (const std::string& v : values) raw.push_back(v.c_str());
-  group.createDataSet(name, type, H5::DataSpace(1, dims)).write(raw.data(), type);
+  const char* none = nullptr;  // HDF5 wants a buffer even for no values
+  object.createAttribute(name, type, H5::DataSpace(1, dims)).write(type, values.empty() ? &none : values.data());
 }
 
-void write_int64s(H5::Group& group, const char* name, const std::vector<std::int64_t>& values) {
-  const hsize_t dims[1] = {values.size()};
-  group.createDataSet(name, H5::PredType::NATIVE_INT64, H5::DataSpace(1, dims))
-      .write(values.data(), H5::PredType::NATIVE_INT64);
-}
-
-std::vector<std::string> read_strings(const H5::Group& group, const char* name) {
-  const H5::DataSet dataset = group.openDataSet(name);
-  hsize_t n = 0;
-  dataset.getSpace().getSimpleExtentDims(&n);
-  std::vector<char*> raw(static_cast<std::size_t>(n), nullptr);
-  if (n == 0) return {};
+std::vector<std::string> read_strings_attribute(const H5::H5Object& object, const char* name) {
+  const H5::Attribute attribute = object.openAttribute(name);
+  const H5::DataSpace space = attribute.getSpace();
+  std::vector<char*> raw(static_cast<std::size_t>(space.getSimpleExtentNpoints()), nullptr);
+  if (raw.empty()) return {};
   const H5::StrType type = utf8_string_type();
-  dataset.read(raw.data(), type);
+  attribute.read(type, raw.data());
   std::vector<std::string> out(raw.begin(), raw.end());
-  H5::DataSet::vlenReclaim(raw.data(), type, dataset.getSpace());
+  H5::DataSet::vlenReclaim(raw.data(), type, space);
   return out;
 }
 
-std::vector<std::int64_t> read_int64s(const H5::Group& group, const char* name) {
-  const H5::DataSet dataset = group.openDataSet(name);
-  hsize_t n = 0;
-  dataset.getSpace().getSimpleExtentDims(&n);
-  std::vector<std::int64_t> out(static_cast<std::size_t>(n));
-  if (n > 0) dataset.read(out.data(), H5::PredType::NATIVE_INT64);
-  return out;
-}
-
-/// The group `classes`: `name`, `parent` (C,) and `model_offset` (C + 1,):
-/// class c lists the rows [model_offset[c], model_offset[c + 1]) of `model`
-/// (M,), in .cla order; the attribute `file` names the .cla file.
+/// The group `classes`, as attributes (datasets of variable-length strings
+/// cost about 20 ms each to create): `name`, `parent` (C,) and
+/// `model_offset` (C + 1,): class c lists the models
+/// `model[model_offset[c]:model_offset[c + 1]]` of `model` (M,), in .cla
+/// order; `file` names the .cla file.
 void write_classes(H5::H5File& file, const std::vector<PsbClass>& classes, const std::string& source) {
   H5::Group group = file.createGroup("classes");
-  std::vector<std::string> names, parents, models;
+  std::vector<const char*> names, parents, models;
   std::vector<std::int64_t> offset = {0};
   for (const PsbClass& c : classes) {
-    names.push_back(c.name);
-    parents.push_back(c.parent);
-    models.insert(models.end(), c.models.begin(), c.models.end());
+    names.push_back(c.name.c_str());
+    parents.push_back(c.parent.c_str());
+    for (const std::string& m : c.models) models.push_back(m.c_str());
     offset.push_back(static_cast<std::int64_t>(models.size()));
   }
-  write_strings(group, "name", names);
-  write_strings(group, "parent", parents);
-  write_int64s(group, "model_offset", offset);
-  write_strings(group, "model", models);
+  write_strings_attribute(group, "name", names);
+  write_strings_attribute(group, "parent", parents);
+  write_strings_attribute(group, "model", models);
+  const hsize_t dims[1] = {offset.size()};
+  group.createAttribute("model_offset", H5::PredType::NATIVE_INT64, H5::DataSpace(1, dims))
+      .write(H5::PredType::NATIVE_INT64, offset.data());
   write_string_attribute(group, "file", source);
 }
 
 void read_classes(const H5::H5File& file, Provenance& provenance) {
   if (!file.nameExists("classes")) return;
   const H5::Group group = file.openGroup("classes");
-  const std::vector<std::string> names = read_strings(group, "name"), parents = read_strings(group, "parent"),
-                                 models = read_strings(group, "model");
-  const std::vector<std::int64_t> offset = read_int64s(group, "model_offset");
+  const std::vector<std::string> names = read_strings_attribute(group, "name"),
+                                 parents = read_strings_attribute(group, "parent"),
+                                 models = read_strings_attribute(group, "model");
+  const H5::Attribute offsets = group.openAttribute("model_offset");
+  std::vector<std::int64_t> offset(static_cast<std::size_t>(offsets.getSpace().getSimpleExtentNpoints()));
+  offsets.read(H5::PredType::NATIVE_INT64, offset.data());
   if (offset.size() != names.size() + 1 || parents.size() != names.size() || offset.front() != 0 ||
       offset.back() != static_cast<std::int64_t>(models.size()) || !std::is_sorted(offset.begin(), offset.end()))
     throw H5::GroupIException("read_classes", "the classes group is inconsistent");
@@ -267,10 +257,7 @@ void read_classes(const H5::H5File& file, Provenance& provenance) {
 
 template <std::size_t N>
 void write_columns_attribute(H5::DataSet& dataset, const std::array<const char*, N>& names) {
-  const H5::StrType type = utf8_string_type();
-  const hsize_t dims[1] = {N};
-  H5::Attribute attribute = dataset.createAttribute("columns", type, H5::DataSpace(1, dims));
-  attribute.write(type, names.data());
+  write_strings_attribute(dataset, "columns", std::vector<const char*>(names.begin(), names.end()));
 }
 
 std::string utc_now() {
