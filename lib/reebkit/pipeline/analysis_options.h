@@ -5,7 +5,8 @@
 // `analysis_options`), so that a collection remembers how it was analysed,
 // `reeb query MESH` analyses a mesh file the same way and `reeb index
 // --resume` refuses other options. Adding an analysis option is one row of
-// the table (analysis_options.cpp).
+// the table (analysis_options.cpp); an option of a new enum type also needs
+// its to_value / from_value pair there (its name as text, as Geodesic's).
 #pragma once
 
 #include "reebkit/core/option_value.h"
