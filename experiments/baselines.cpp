@@ -23,6 +23,7 @@
 #include "reebkit/io/psb_classes.h"
 #include "reebkit/mesh/load_mesh.h"
 #include "reebkit/mesh/mesh_graph.h"
+#include "reebkit/mesh/surface_sampling.h"
 
 #include <omp.h>
 
@@ -30,7 +31,6 @@
 #include <cmath>
 #include <iostream>
 #include <map>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -61,20 +61,7 @@ Histogram normalized(Histogram h) {
 
 /// D2 with a fixed seed: every mesh gets the same random sequence.
 Histogram d2(const Mesh& m) {
-  std::vector<double> cumulative(static_cast<std::size_t>(m.num_triangles()));
-  double total = 0;
-  for (Index f = 0; f < m.num_triangles(); ++f) cumulative[static_cast<std::size_t>(f)] = total += triangle_area(m, f);
-  std::mt19937_64 rng(2002);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::vector<Vec3> points;
-  for (int s = 0; s < kD2Samples; ++s) {
-    const auto it = std::upper_bound(cumulative.begin(), cumulative.end(), unit(rng) * total);
-    const Index f = static_cast<Index>(std::min<std::ptrdiff_t>(it - cumulative.begin(), m.num_triangles() - 1));
-    const double r1 = std::sqrt(unit(rng)), r2 = unit(rng);  // uniform on the triangle (Osada et al., eq. 1)
-    points.push_back((1 - r1) * m.vertices.row(m.triangles(f, 0)).transpose() +
-                     r1 * (1 - r2) * m.vertices.row(m.triangles(f, 1)).transpose() +
-                     r1 * r2 * m.vertices.row(m.triangles(f, 2)).transpose());
-  }
+  const std::vector<Vec3> points = reebkit::sample_surface(m, reebkit::triangle_areas(m).view(), kD2Samples, 2002);
   std::vector<double> distances;
   distances.reserve(points.size() * (points.size() - 1) / 2);
   double sum = 0;

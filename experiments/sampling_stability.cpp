@@ -17,6 +17,7 @@
 // marching, and with fast marching on the copy refined twice more by plain
 // midpoint subdivision (the same surface, the distance nearer convergence),
 // then how many of the last two persist above each nonzero threshold.
+#include "reebkit/collection/mesh_inputs.h"
 #include "reebkit/core/timer.h"
 #include "reebkit/features/critical_points.h"
 #include "reebkit/features/persistence.h"
@@ -127,18 +128,6 @@ MeshResult analyse(const std::string& name, const Mesh& mesh) {
   return r;
 }
 
-std::vector<fs::path> off_files(const fs::path& p) {
-  std::vector<fs::path> out;
-  if (fs::is_directory(p)) {
-    for (const auto& e : fs::directory_iterator(p))
-      if (e.path().extension() == ".off") out.push_back(e.path());
-    std::sort(out.begin(), out.end());
-  } else {
-    out.push_back(p);
-  }
-  return out;
-}
-
 std::string list(const MeshResult& r, std::size_t m, std::size_t Outcome::*field) {
   std::string s;
   for (int k = 0; k < kVariants; ++k) {
@@ -209,7 +198,7 @@ void print_group(const std::string& group, const std::vector<MeshResult>& result
 // subdivision twice (16 times the triangles; vertex ids kept), restricted to
 // the copy's vertices; then those of the last two that persist at least
 // each nonzero threshold times max f1.
-void converged_extrema(const std::string& group, const std::vector<fs::path>& files) {
+void converged_extrema(const std::string& group, const std::vector<MeshInput>& files) {
   std::string head = "| mesh | copy | dijkstra | fmm | fmm, refined x16 |", rule = "|---|---|---:|---:|---:|";
   for (const double t : g_thresholds)
     if (t > 0) {
@@ -228,8 +217,8 @@ void converged_extrema(const std::string& group, const std::vector<fs::path>& fi
               "and of the refined extrema have a persistence (`extrema_persistence` on the copy's graph) of at "
               "least each threshold times max f1.\n\n%s\n%s\n",
               group.c_str(), head.c_str(), rule.c_str());
-  for (const fs::path& file : files) {
-    const Mesh mesh = load_mesh(file).components.front();
+  for (const MeshInput& file : files) {
+    const Mesh mesh = load_mesh(file.path).components.front();
     for (int k = 0; k <= kResampled; ++k) {
       const Mesh copy = make_variant(mesh, k);
       const MeshGraph graph = build_mesh_graph(copy);
@@ -240,7 +229,7 @@ void converged_extrema(const std::string& group, const std::vector<fs::path>& fi
       std::vector<double> converged = fast_marching(build_mesh_graph(fine), s1).distance;
       converged.resize(static_cast<std::size_t>(copy.num_vertices()));
       const DistanceField fmm = fast_marching(graph, s1);
-      std::printf("| %s | %s | %zu | %zu | %zu |", k == 0 ? file.stem().string().c_str() : "",
+      std::printf("| %s | %s | %zu | %zu | %zu |", k == 0 ? file.path.stem().string().c_str() : "",
                   k == 0 ? "original" : ("resampled " + std::to_string(k)).c_str(),
                   local_extrema(graph, dijkstra(graph, s1).distance).size(), local_extrema(graph, fmm.distance).size(),
                   local_extrema(graph, converged).size());
@@ -361,8 +350,8 @@ int main(int argc, char** argv) {
       const fs::path p(arg);
       const std::string group = fs::is_directory(p) ? fs::canonical(p).filename().string()
                                                     : fs::canonical(p).parent_path().filename().string();
-      for (const fs::path& file : off_files(p))
-        group_of(group).push_back(analyse(file.stem().string(), load_mesh(file).components.front()));
+      for (const MeshInput& file : list_mesh_inputs({arg}))
+        group_of(group).push_back(analyse(file.path.stem().string(), load_mesh(file.path).components.front()));
     }
     std::vector<PsbClass> classes;
     if (!cla.empty()) {
@@ -407,7 +396,7 @@ int main(int argc, char** argv) {
       for (std::size_t m = 0; m < g_configs.size(); ++m) print_summary_row("all", everything, m);
     std::printf("\n## Per mesh\n");
     for (const auto& [group, results] : groups) print_group(group, results);
-    if (!args.empty()) converged_extrema(groups.front().first, off_files(args.front()));
+    if (!args.empty()) converged_extrema(groups.front().first, list_mesh_inputs({args.front()}));
     if (!classes.empty()) shrec_feature_counts(classes, shrec_dir);
     std::cerr << "sampling_stability: " << timer.lap() / 1000.0 << " s\n";
   } catch (const std::exception& e) {

@@ -3,6 +3,7 @@
 // class is the file name without its trailing digits (TOSCA: cat0 ... cat10).
 //
 //   build/experiments/signature_stability build/data/tosca_dev > results/signature_stability.md
+#include "reebkit/collection/mesh_inputs.h"
 #include "reebkit/mesh/load_mesh.h"
 #include "reebkit/pipeline/analyze_mesh.h"
 
@@ -37,12 +38,9 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    std::vector<std::filesystem::path> files;
-    for (const auto& e : std::filesystem::directory_iterator(argv[1]))
-      if (e.path().extension() == ".off") files.push_back(e.path());
-    std::sort(files.begin(), files.end());
     std::vector<Sample> samples;
-    for (const auto& f : files) {
+    for (const reebkit::MeshInput& input : reebkit::list_mesh_inputs({argv[1]})) {
+      const std::filesystem::path& f = input.path;
       std::string label = f.stem().string();
       while (!label.empty() && std::isdigit(static_cast<unsigned char>(label.back()))) label.pop_back();
       const auto analysis = reebkit::analyze_mesh(reebkit::load_mesh(f).components.front());

@@ -4,6 +4,7 @@
 // the (leaves, cycles) pairs of its holed and closed poses compare.
 //
 //   build/experiments/tosca_graphs /tmp/data/tosca_dev > results/tosca_graphs.md
+#include "reebkit/collection/mesh_inputs.h"
 #include "reebkit/core/timer.h"
 #include "reebkit/mesh/load_mesh.h"
 #include "reebkit/mesh/mesh_topology.h"
@@ -37,9 +38,7 @@ GraphCounts count(const reebkit::MeshAnalysis& a) {
       a.features.vertices.begin(), a.features.vertices.end(),
       [&](Index v) { return a.mesh.source_index(v) == reebkit::kInvalidIndex; }));
   c.nodes = a.reeb.num_nodes();
-  c.leaves = static_cast<Index>(std::count_if(a.reeb.nodes.begin(), a.reeb.nodes.end(), [](const reebkit::ReebNode& n) {
-    return n.end == reebkit::NodeType::Termination;
-  }));
+  c.leaves = a.reeb.leaf_count();
   c.cycles = a.reeb.independent_cycles();
   return c;
 }
@@ -103,12 +102,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    std::vector<std::filesystem::path> files;
-    for (const auto& entry : std::filesystem::directory_iterator(argv[1]))
-      if (entry.path().extension() == ".off") files.push_back(entry.path());
-    std::sort(files.begin(), files.end(), [](const auto& a, const auto& b) {
-      return class_and_pose(a.stem().string()) < class_and_pose(b.stem().string());
-    });
+    const std::vector<reebkit::MeshInput> files = reebkit::list_mesh_inputs({argv[1]});
 
     reebkit::Timer timer;
     reebkit::AnalysisOptions keep_holes;
@@ -122,10 +116,10 @@ int main(int argc, char** argv) {
               << reebkit::HoleFillingOptions{}.max_loop_length << " sqrt(area)). L/C = leaves/cycles.\n\n"
               << "| mesh | boundary loops | features | nodes | L/C | features filled | nodes filled | L/C filled |\n"
               << "|---|---:|---:|---:|---:|---:|---:|---:|\n";
-    for (const auto& file : files) {
-      const reebkit::Mesh mesh = reebkit::load_mesh(file).components.front();
+    for (const reebkit::MeshInput& file : files) {
+      const reebkit::Mesh mesh = reebkit::load_mesh(file.path).components.front();
       Row row;
-      row.name = file.stem().string();
+      row.name = file.path.stem().string();
       row.mesh = mesh;
       row.loops = reebkit::analyze_topology(mesh).boundary_loops;
       row.open = count(reebkit::analyze_mesh(mesh, keep_holes));

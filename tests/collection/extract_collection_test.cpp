@@ -5,6 +5,7 @@
 #include "reebkit/io/off.h"
 #include "reebkit/mesh/load_mesh.h"
 #include "reebkit/mesh/shapes.h"
+#include "reebkit/pipeline/analysis_options.h"
 #include "reebkit/pipeline/mesh_record.h"
 #include "reebkit/store/collection_file.h"
 
@@ -83,7 +84,7 @@ TEST(ExtractCollection, BrokenMeshIsRecordedAndTheOthersMatchTheDirectPipeline) 
   const std::vector<MeshInput> inputs = write_collection(dir);
   ASSERT_EQ(inputs.size(), 8u);
   ASSERT_EQ(inputs[0].name, "broken.off");
-  const ClassMap classes = {{"m1", "star"}, {"m6", "torus"}};
+  const std::vector<PsbClass> classes = {{"star", "0", {"m1"}}, {"torus", "0", {"m6"}}};
   const ExtractionSummary summary = extract_collection(inputs, classes, dir / "c.h5", with_threads(2));
   EXPECT_EQ(summary.ok, 7);
   ASSERT_EQ(summary.failed.size(), 1u);
@@ -193,6 +194,54 @@ TEST(ExtractCollection, ReindexingRecomputesOnlyChangedFilesAndKeepsNamesUnique)
   EXPECT_EQ(*m3, 7);
   expect_same(reader.entry(*m3), direct_entry(inputs[3]));
   for (std::size_t i = 0; i < 7; ++i) EXPECT_EQ(reader.names()[i], inputs[i < 3 ? i : i + 1].name);
+}
+
+TEST(ExtractCollection, TheFileKeepsItsAnalysisOptionsAndClassesAndResumeRefusesOthers) {
+  const TempDir dir;
+  const std::vector<MeshInput> inputs = write_collection(dir);
+  const std::vector<PsbClass> classes = {{"torus", "0", {"m7", "m6"}}, {"star", "0", {"m2", "m1"}}};
+  ExtractionOptions options = with_threads(2);
+  options.analysis.features.epsilon = 0.1;
+  options.analysis.features.min_persistence = 0.02;
+  options.classes_file = "two.cla";
+  extract_collection(inputs, classes, dir / "c.h5", options);
+  {
+    const CollectionReader reader(dir / "c.h5");
+    const Provenance& provenance = reader.provenance();
+    EXPECT_TRUE(analysis_option_differences(analysis_options_from(provenance.analysis_options), options.analysis)
+                    .empty());
+    ASSERT_EQ(provenance.classes.size(), 2u);
+    EXPECT_EQ(provenance.classes[0].models, classes[0].models);
+    EXPECT_EQ(provenance.classes[1].models, classes[1].models);
+    EXPECT_EQ(provenance.classes_file, "two.cla");
+    EXPECT_EQ(reader.class_labels()[7], "torus");
+  }
+
+  // Other options: refused before any work, naming each option with both values.
+  const std::uint64_t before = content_hash(dir / "c.h5");
+  ExtractionOptions other = options;
+  other.resume = true;
+  other.analysis.features.epsilon = 0.05;
+  other.analysis.features.geodesic = Geodesic::FastMarching;
+  try {
+    extract_collection(inputs, classes, dir / "c.h5", other);
+    ADD_FAILURE() << "resumed with other analysis options";
+  } catch (const Error& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find((dir / "c.h5").string() + ": cannot resume"), std::string::npos) << message;
+    EXPECT_NE(message.find("epsilon: 0.1 in the file, 0.05 now"), std::string::npos) << message;
+    EXPECT_NE(message.find("geodesic: dijkstra in the file, fmm now"), std::string::npos) << message;
+    EXPECT_EQ(message.find("min_persistence"), std::string::npos) << message;
+  }
+  EXPECT_EQ(content_hash(dir / "c.h5"), before);
+  EXPECT_FALSE(std::filesystem::exists(dir / "c.h5.resume-tmp"));
+
+  // The same options: nothing to compute.
+  ExtractionOptions same = options;
+  same.resume = true;
+  const ExtractionSummary summary = extract_collection(inputs, classes, dir / "c.h5", same);
+  EXPECT_EQ(summary.computed(), 0);
+  EXPECT_EQ(summary.skipped, 8);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // `reeb info` reports it and `reeb export` prints a graph as `reeb graph` does.
 #include "io/io_test_util.h"
 #include "reebkit/collection/mesh_inputs.h"
+#include "reebkit/pipeline/analysis_options.h"
 #include "reebkit/store/collection_file.h"
 #include "support/test_support.h"
 
@@ -50,6 +51,10 @@ TEST(ReebIndexCli, IndexInfoExportOnTheEmbeddedCollection) {
       << info;
   EXPECT_NE(info.find("layout " + std::to_string(kCollectionLayoutVersion)), std::string::npos) << info;
   EXPECT_NE(info.find("command: reeb index"), std::string::npos) << info;
+  std::string analysis = "analysis options:";
+  for (const NamedOption& option : named_analysis_options(AnalysisOptions{}))
+    analysis += " " + option.name + "=" + option_text(option.value);
+  EXPECT_NE(info.find(analysis + "\n"), std::string::npos) << info;
 
   // The same document from the collection and from the mesh (timings and path aside).
   const auto [exported, export_out] =

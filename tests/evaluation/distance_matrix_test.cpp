@@ -4,12 +4,12 @@
 
 #include "io/io_test_util.h"
 #include "reebkit/core/error.h"
+#include "support/test_support.h"
 #include "reebkit/io/file_bytes.h"
 
 #include <gtest/gtest.h>
 
 #include <cstring>
-#include <functional>
 #include <limits>
 
 namespace reebkit::test {
@@ -21,16 +21,6 @@ DistanceMatrix awkward_matrix() {
       3.4e38f, 0.0f, -2.5f,  //
       std::numeric_limits<float>::infinity(), 1.0f / 3.0f, 0.0f;
   return m;
-}
-
-std::string error_message(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected an Error";
-  return "";
 }
 
 TEST(DistanceMatrix, PsbLayoutIsRowMajorFloat32WithoutHeader) {
@@ -75,13 +65,13 @@ TEST(DistanceMatrix, PsbErrorsNameTheFileAndTheProblem) {
   write_bytes(dir / "seven.matrix", std::string(7, '\0'));
   write_bytes(dir / "three.matrix", std::string(12, '\0'));
   write_bytes(dir / "empty.matrix", "");
-  const std::string seven = error_message([&] { read_psb_matrix(dir / "seven.matrix"); });
+  const std::string seven = thrown_message<Error>([&] { read_psb_matrix(dir / "seven.matrix"); });
   EXPECT_NE(seven.find("seven.matrix: 7 bytes is not a whole number of float32"), std::string::npos) << seven;
-  const std::string three = error_message([&] { read_psb_matrix(dir / "three.matrix"); });
+  const std::string three = thrown_message<Error>([&] { read_psb_matrix(dir / "three.matrix"); });
   EXPECT_NE(three.find("three.matrix: 3 float32 values do not make a square"), std::string::npos) << three;
-  const std::string empty = error_message([&] { read_psb_matrix(dir / "empty.matrix"); });
+  const std::string empty = thrown_message<Error>([&] { read_psb_matrix(dir / "empty.matrix"); });
   EXPECT_NE(empty.find("empty.matrix: empty distance matrix"), std::string::npos) << empty;
-  const std::string missing = error_message([&] { read_psb_matrix(dir / "none.matrix"); });
+  const std::string missing = thrown_message<Error>([&] { read_psb_matrix(dir / "none.matrix"); });
   EXPECT_NE(missing.find("none.matrix"), std::string::npos) << missing;
   EXPECT_THROW(write_psb_matrix(dir / "x.matrix", DistanceMatrix(2, 3)), InvalidArgument);
 }
@@ -92,14 +82,14 @@ TEST(DistanceMatrix, ShrecErrorsNameTheFileLineAndProblem) {
   write_bytes(dir / "word.txt", "0 1\nx 0\n");
   write_bytes(dir / "wide.txt", "0 1 2\n1 0 2\n");
   write_bytes(dir / "blank.txt", " \n\n");
-  const std::string ragged = error_message([&] { read_shrec_matrix(dir / "ragged.txt"); });
+  const std::string ragged = thrown_message<Error>([&] { read_shrec_matrix(dir / "ragged.txt"); });
   EXPECT_NE(ragged.find("ragged.txt:2: row 2 has 2 distances, the first row 3"), std::string::npos) << ragged;
-  const std::string word = error_message([&] { read_shrec_matrix(dir / "word.txt"); });
+  const std::string word = thrown_message<Error>([&] { read_shrec_matrix(dir / "word.txt"); });
   EXPECT_NE(word.find("word.txt:2:"), std::string::npos) << word;
   EXPECT_NE(word.find("'x'"), std::string::npos) << word;
-  const std::string wide = error_message([&] { read_shrec_matrix(dir / "wide.txt"); });
+  const std::string wide = thrown_message<Error>([&] { read_shrec_matrix(dir / "wide.txt"); });
   EXPECT_NE(wide.find("wide.txt: 2 rows of 3 distances, not a square matrix"), std::string::npos) << wide;
-  const std::string blank = error_message([&] { read_shrec_matrix(dir / "blank.txt"); });
+  const std::string blank = thrown_message<Error>([&] { read_shrec_matrix(dir / "blank.txt"); });
   EXPECT_NE(blank.find("blank.txt: empty distance matrix"), std::string::npos) << blank;
 }
 

@@ -22,9 +22,7 @@ TEST(AnalyzeMesh, StarGivesOneRootAndALeafPerArm) {
   const MeshAnalysis a = analyze_mesh(make_star(star));
   ASSERT_EQ(a.features.vertices.size(), 5u);
   ASSERT_EQ(a.fq.value.size(), static_cast<std::size_t>(a.mesh.num_vertices()));
-  const auto leaves = std::count_if(a.reeb.nodes.begin(), a.reeb.nodes.end(),
-                                    [](const ReebNode& n) { return n.end == NodeType::Termination; });
-  EXPECT_EQ(leaves, 5);
+  EXPECT_EQ(a.reeb.leaf_count(), 5);
   EXPECT_EQ(a.reeb.nodes.front().type, NodeType::Root);
   EXPECT_EQ(a.reeb.independent_cycles(), 0);
   // Each leaf region holds the feature point it ends at.

@@ -40,6 +40,18 @@ TEST(ReebGraph, CyclesAreEdgesMinusNodesPlusComponents) {
   EXPECT_EQ(two.independent_cycles(), 2);
 }
 
+TEST(ReebGraph, LeavesAreTheNodesEndingInATermination) {
+  EXPECT_EQ(graph_with(0, {}).leaf_count(), 0);
+  // The torus graph: only node 4 ends in a termination.
+  ReebGraph torus = graph_with(5, {{0, 1}, {0, 2}, {1, 3}, {2, 3}, {3, 4}});
+  for (const auto& [node, end] : {std::pair{0, NodeType::Bifurcation}, {1, NodeType::Junction},
+                                  {2, NodeType::Junction}, {3, NodeType::Bifurcation}})
+    torus.nodes[node].end = end;
+  EXPECT_EQ(torus.leaf_count(), 1);
+  torus.nodes[3].end = NodeType::Termination;
+  EXPECT_EQ(torus.leaf_count(), 2);
+}
+
 /// build_reeb_graph equals reference_reeb_graph exactly: same nodes (in the
 /// same order, with the same attributes), edges and segmentation; the same
 /// skeleton points up to the rounding of the fast builder's running sums.
@@ -221,7 +233,7 @@ TEST(Skeleton, RunsAlongTheAxisOfEachStarArm) {
   const MeshGraph graph = build_mesh_graph(mesh);
   const std::vector<Index> features = extract_feature_points(graph).vertices;
   const ReebGraph g = build_reeb_graph(mesh, graph, quotient_function(graph, features).value);
-  ASSERT_EQ(count_nodes(g, &ReebNode::end, NodeType::Termination), options.arms) << summary(g);
+  ASSERT_EQ(g.leaf_count(), options.arms) << summary(g);
   std::vector<int> arm_seen(axes.size(), 0);
   for (const ReebNode& node : g.nodes) {
     if (node.end != NodeType::Termination) continue;

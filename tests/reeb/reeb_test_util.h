@@ -101,6 +101,10 @@ inline void expect_consistent(const ReebGraph& g, const Mesh& mesh, const std::v
   EXPECT_EQ(g.nodes[0].type, NodeType::Root);
   EXPECT_EQ(g.nodes[0].fq_min, *std::min_element(f.begin(), f.end()));
   for (const auto& [a, b] : g.edges) EXPECT_LT(a, b);
+  // A leaf is a node that hands over to no later node.
+  std::vector<char> hands_over(g.nodes.size(), 0);
+  for (const auto& [a, b] : g.edges) hands_over[static_cast<std::size_t>(a)] = 1;
+  EXPECT_EQ(g.leaf_count(), std::count(hands_over.begin(), hands_over.end(), 0));
   EXPECT_EQ(g.connected_components(), 1);
   expect_skeleton_in_place(g, mesh, f);
 }
@@ -109,7 +113,7 @@ inline void expect_consistent(const ReebGraph& g, const Mesh& mesh, const std::v
 inline std::string summary(const ReebGraph& g) {
   std::ostringstream s;
   s << g.num_nodes() << " nodes, " << g.num_edges() << " edges, " << g.independent_cycles() << " cycles, "
-    << count_nodes(g, &ReebNode::end, NodeType::Termination) << " leaves";
+    << g.leaf_count() << " leaves";
   return s.str();
 }
 

@@ -101,7 +101,10 @@ void expect_same(const GraphRecord& expected, const GraphRecord& actual, const s
 Provenance test_provenance() {
   Provenance p;
   p.options = R"({"reeb_graph": true})";
+  p.analysis_options = {{"epsilon", 0.05}, {"geodesic", std::string("fmm")}, {"start_vertex", std::int64_t{-7}}};
   p.command = "reeb index «meshes» -o c.h5";
+  p.classes = {{"star", "0", {"m2", "m10", "m1"}}, {"empty", "star", {}}, {"torus «ring»", "0", {"m6"}}};
+  p.classes_file = "classes/«c».cla";
   return p;
 }
 
@@ -139,6 +142,19 @@ TEST(CollectionFile, RoundTripFieldByField) {
   EXPECT_EQ(reader.provenance().reebkit_version, REEBKIT_VERSION);
   EXPECT_EQ(reader.provenance().options, test_provenance().options);
   EXPECT_EQ(reader.provenance().command, test_provenance().command);
+  // The named options come back typed (in the file's attribute order: by name).
+  std::map<std::string, OptionValue> options;
+  for (const NamedOption& o : reader.provenance().analysis_options) options.emplace(o.name, o.value);
+  EXPECT_EQ(options, (std::map<std::string, OptionValue>{
+                         {"epsilon", 0.05}, {"geodesic", std::string("fmm")}, {"start_vertex", std::int64_t{-7}}}));
+  // The classes in their .cla order, an empty one too.
+  ASSERT_EQ(reader.provenance().classes.size(), 3u);
+  for (std::size_t c = 0; c < 3; ++c) {
+    EXPECT_EQ(reader.provenance().classes[c].name, test_provenance().classes[c].name);
+    EXPECT_EQ(reader.provenance().classes[c].parent, test_provenance().classes[c].parent);
+    EXPECT_EQ(reader.provenance().classes[c].models, test_provenance().classes[c].models);
+  }
+  EXPECT_EQ(reader.provenance().classes_file, test_provenance().classes_file);
   // ISO 8601, UTC: 2024-01-02T03:04:05Z
   EXPECT_EQ(reader.provenance().created.size(), 20u);
   EXPECT_EQ(reader.provenance().created.back(), 'Z');
@@ -153,6 +169,15 @@ TEST(CollectionFile, EmptyCollection) {
   EXPECT_EQ(reader.size(), 0);
   EXPECT_TRUE(reader.names().empty());
   EXPECT_TRUE(reader.signatures().empty());
+  // No analysis options and one class without models: empty arrays read back.
+  Provenance bare;
+  bare.classes = {{"none", "0", {}}};
+  CollectionWriter(dir / "bare.h5", bare, false).close();
+  const CollectionReader bare_reader(dir / "bare.h5");
+  EXPECT_TRUE(bare_reader.provenance().analysis_options.empty());
+  ASSERT_EQ(bare_reader.provenance().classes.size(), 1u);
+  EXPECT_EQ(bare_reader.provenance().classes[0].name, "none");
+  EXPECT_TRUE(bare_reader.provenance().classes[0].models.empty());
 }
 
 TEST(CollectionFile, ResumeKeepsOldEntriesAndAppends) {
@@ -183,31 +208,19 @@ TEST(CollectionFile, ReplacesAnExistingFileWithoutResume) {
   expect_entries(dir / "c.h5", 7);
 }
 
-/// The Error `action` throws; fails the test when it throws none.
-template <typename Action>
-std::string error_message(Action&& action) {
-  try {
-    action();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected an Error";
-  return {};
-}
-
 TEST(CollectionFile, ErrorsNameTheFile) {
   const TempDir dir;
   const auto contains = [](const std::string& text, const std::string& part) {
     return text.find(part) != std::string::npos;
   };
   const auto missing = dir / "missing.h5";
-  EXPECT_TRUE(contains(error_message([&] { CollectionReader r(missing); }), missing.string()));
+  EXPECT_TRUE(contains(test::thrown_message<Error>([&] { CollectionReader r(missing); }), missing.string()));
 
   const auto text = dir / "text.h5";
   test::write_bytes(text, "not HDF5 at all\n");
-  const std::string not_hdf5 = error_message([&] { CollectionReader r(text); });
+  const std::string not_hdf5 = test::thrown_message<Error>([&] { CollectionReader r(text); });
   EXPECT_TRUE(contains(not_hdf5, text.string()) && contains(not_hdf5, "not an HDF5 file")) << not_hdf5;
-  EXPECT_TRUE(contains(error_message([&] { CollectionWriter w(text, test_provenance(), true); }), text.string()));
+  EXPECT_TRUE(contains(test::thrown_message<Error>([&] { CollectionWriter w(text, test_provenance(), true); }), text.string()));
 
   const auto other = dir / "other.h5";
   {
@@ -215,22 +228,25 @@ TEST(CollectionFile, ErrorsNameTheFile) {
     const hsize_t dims[1] = {3};
     file.createDataSet("data", H5::PredType::NATIVE_INT, H5::DataSpace(1, dims));
   }
-  const std::string no_layout = error_message([&] { CollectionReader r(other); });
+  const std::string no_layout = test::thrown_message<Error>([&] { CollectionReader r(other); });
   EXPECT_TRUE(contains(no_layout, other.string()) && contains(no_layout, "not a reebkit collection")) << no_layout;
 
-  const auto future = dir / "future.h5";
-  write_entries(future, 0, 3, false);
-  {
-    H5::H5File file(future.string(), H5F_ACC_RDWR);
-    const int version = kCollectionLayoutVersion + 1;
-    file.openAttribute("layout").write(H5::PredType::NATIVE_INT, &version);
+  // Layout 2 (before the analysis options and classes were stored) and a future one.
+  for (const int version : {kCollectionLayoutVersion - 1, kCollectionLayoutVersion + 1}) {
+    const auto other_layout = dir / ("layout" + std::to_string(version) + ".h5");
+    write_entries(other_layout, 0, 3, false);
+    {
+      H5::H5File file(other_layout.string(), H5F_ACC_RDWR);
+      file.openAttribute("layout").write(H5::PredType::NATIVE_INT, &version);
+    }
+    const std::string layout = test::thrown_message<Error>([&] { CollectionReader r(other_layout); });
+    EXPECT_TRUE(contains(layout, other_layout.string()) && contains(layout, "layout version " + std::to_string(version)) &&
+                contains(layout, "re-index the meshes with this version"))
+        << layout;
   }
-  const std::string layout = error_message([&] { CollectionReader r(future); });
-  EXPECT_TRUE(contains(layout, future.string()) && contains(layout, "layout version " + std::to_string(kCollectionLayoutVersion + 1)))
-      << layout;
 
   const auto unwritable = dir / "no_such_folder" / "c.h5";
-  EXPECT_TRUE(contains(error_message([&] { CollectionWriter w(unwritable, test_provenance(), false); }),
+  EXPECT_TRUE(contains(test::thrown_message<Error>([&] { CollectionWriter w(unwritable, test_provenance(), false); }),
                        unwritable.string()));
 }
 
@@ -284,6 +300,13 @@ with h5py.File(sys.argv[1], "r", libver="latest", swmr=True) as f:
     G = int(f["count"][0])                      # trust only the committed entries
     emit("layout", [int(f.attrs["layout"])])
     emit("command", [f.attrs["command"]])
+    for key, value in sorted(f["analysis_options"].attrs.items()):
+        emit("analysis_options/" + key, [type(value.item() if hasattr(value, "item") else value).__name__, value])
+    classes = f["classes"].attrs
+    offset, model = classes["model_offset"], classes["model"]
+    for c, name in enumerate(classes["name"]):
+        emit("classes/" + name, [classes["parent"][c]] + list(model[offset[c]:offset[c + 1]]))
+    emit("classes_file", [classes["file"]])
     emit("count", [G])
     for key in ("timings", "signature", "nodes", "node_geometry", "node_attr", "edges", "edge_attr", "skeleton_points"):
         emit("columns/" + key, [c.decode() if isinstance(c, bytes) else c for c in f[key].attrs["columns"]])
@@ -404,6 +427,14 @@ TEST(CollectionFile, PythonReadsItWithH5pyAndNumpy) {
   const auto fields = read_with_python(dir / "c.h5");
   EXPECT_EQ(fields.at("layout"), std::vector<std::string>{std::to_string(kCollectionLayoutVersion)});
   EXPECT_EQ(fields.at("command"), std::vector<std::string>{test_provenance().command});
+  // Typed analysis options: h5py gives Python's float, int and str.
+  EXPECT_EQ(fields.at("analysis_options/epsilon"), (std::vector<std::string>{"float", "0.05"}));
+  EXPECT_EQ(fields.at("analysis_options/geodesic"), (std::vector<std::string>{"str", "fmm"}));
+  EXPECT_EQ(fields.at("analysis_options/start_vertex"), (std::vector<std::string>{"int", "-7"}));
+  EXPECT_EQ(fields.at("classes/star"), (std::vector<std::string>{"0", "m2", "m10", "m1"}));
+  EXPECT_EQ(fields.at("classes/empty"), (std::vector<std::string>{"star"}));
+  EXPECT_EQ(fields.at("classes/torus «ring»"), (std::vector<std::string>{"0", "m6"}));
+  EXPECT_EQ(fields.at("classes_file"), std::vector<std::string>{test_provenance().classes_file});
   const auto names = [](const auto& array) { return std::vector<std::string>(array.begin(), array.end()); };
   EXPECT_EQ(fields.at("columns/node_attr"), names(kNodeAttributeNames));
   EXPECT_EQ(fields.at("columns/edge_attr"), names(kEdgeAttributeNames));

@@ -22,6 +22,19 @@ std::filesystem::path embedded_dataset_dir();
 /// "tosca_dev"), or nullopt when ../shared/datasets is not beside the checkout.
 std::optional<std::filesystem::path> shared_dataset(const std::string& folder);
 
+/// The message of the exception of type E that `action` throws; a test
+/// failure and "" when it throws none.
+template <typename E, typename Action>
+std::string thrown_message(Action&& action) {
+  try {
+    action();
+  } catch (const E& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "expected an exception";
+  return "";
+}
+
 /// Exit status and standard output of a shell command (for end-to-end tests
 /// of the `reeb` binary); -1 when it did not exit normally.
 std::pair<int, std::string> run_command(const std::string& command);

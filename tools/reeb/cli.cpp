@@ -1,11 +1,33 @@
 #include "reeb/cli.h"
 
+#include "reebkit/core/option_value.h"
 #include "reebkit/core/timer.h"
+#include "reebkit/pipeline/analysis_options.h"
 
+#include <algorithm>
 #include <iomanip>
 #include <iostream>
 
 namespace reebkit::cli {
+
+namespace {
+
+/// "min_persistence" -> "min-persistence".
+std::string flag_name(std::string name) {
+  std::replace(name.begin(), name.end(), '_', '-');
+  return name;
+}
+
+/// A value stored in `field`, its current value the default, shown in its shortest exact form.
+template <typename T>
+po::typed_value<T>* defaulted(T* field) {
+  if constexpr (std::is_integral_v<T>)
+    return po::value(field)->default_value(*field, option_text(static_cast<std::int64_t>(*field)));
+  else
+    return po::value(field)->default_value(*field, option_text(*field));
+}
+
+}  // namespace
 
 bool parse(const std::vector<std::string>& args, const std::string& usage,
            const po::options_description& options, const po::positional_options_description& positional,
@@ -21,20 +43,55 @@ bool parse(const std::vector<std::string>& args, const std::string& usage,
   return true;
 }
 
-void add_geodesic_option(po::options_description& options, Geodesic& method) {
-  options.add_options()("geodesic",
-                        po::value<std::string>()
-                            ->default_value(geodesic_name(method))
-                            ->notifier([&method](const std::string& name) { method = parse_geodesic(name); }),
-                        "geodesic distances: dijkstra (shortest edge paths) or fmm (fast marching across the "
-                        "triangles, less sensitive to the sampling)");
+po::options_description analysis_options(AnalysisOptions& analysis) {
+  po::options_description options("analysis options (a collection keeps those it was indexed with)");
+  for (const AnalysisOptionField& field : analysis_option_fields()) {
+    const OptionValue current = field.get(analysis);
+    const auto set = [&analysis, &field](const auto& value) { field.set(analysis, OptionValue(value)); };
+    std::visit(
+        [&](const auto& value) {
+          using T = std::decay_t<decltype(value)>;
+          options.add_options()(flag_name(field.name).c_str(),
+                                po::value<T>()->default_value(value, option_text(current))->notifier(set),
+                                field.help.c_str());
+        },
+        current);
+  }
+  return options;
 }
 
-void add_min_persistence_option(po::options_description& options, double& min_persistence) {
-  options.add_options()("min-persistence", po::value(&min_persistence)->default_value(min_persistence),
-                        "drop the extrema of f1 and f2 whose topological persistence is below this fraction of "
-                        "the geodesic diameter before the relaxed intersection (0: every local extremum, as the "
-                        "paper)");
+std::vector<std::string> given_analysis_options(const po::variables_map& vm) {
+  std::vector<std::string> given;
+  for (const AnalysisOptionField& field : analysis_option_fields()) {
+    const auto it = vm.find(flag_name(field.name));
+    if (it != vm.end() && !it->second.defaulted()) given.push_back(field.name);
+  }
+  return given;
+}
+
+void add_components_option(po::options_description& options, bool& all_components) {
+  options.add_options()("all-components", po::bool_switch(&all_components),
+                        "process every connected component (default: the largest only)");
+}
+
+po::options_description matching_options(MatchingOptions& matching) {
+  po::options_description options("matching options (matching/graph_matching.h)");
+  options.add_options()
+      ("attribute-weight", defaulted(&matching.attribute_weight),
+       "weight of a: node attribute differences (area, f_q range, extent, radius)")
+      ("structure-weight", defaulted(&matching.structure_weight),
+       "weight of s: local structure (degree, start and end types, neighbour area)")
+      ("edge-weight", defaulted(&matching.edge_weight), "weight of e: edge inconsistency of the correspondence")
+      ("profile-weight", defaulted(&matching.profile_weight), "weight of p: radius profiles of the regions")
+      ("shape-weight", defaulted(&matching.shape_weight), "weight of h: shape histograms of the regions")
+      ("global-shape-weight", defaulted(&matching.global_shape_weight),
+       "weight of g: D2 shape distributions of the whole surfaces")
+      ("unmatched-cost", defaulted(&matching.unmatched_cost),
+       "cost of deleting or inserting a node, per unit of node weight")
+      ("min-node-weight", defaulted(&matching.min_node_weight),
+       "added to a node's relative area, so that area-less nodes still count")
+      ("refine-rounds", defaulted(&matching.refine_rounds), "rounds of edge-consistency refinement");
+  return options;
 }
 
 LoadedMesh load_for_command(const std::string& path, bool all_components) {

@@ -1,8 +1,9 @@
 // Shared plumbing of the `reeb` subcommands.
 #pragma once
 
-#include "reebkit/geodesic/geodesic_solver.h"
+#include "reebkit/matching/graph_matching.h"
 #include "reebkit/mesh/load_mesh.h"
+#include "reebkit/pipeline/analyze_mesh.h"
 
 #include <boost/program_options.hpp>
 
@@ -26,18 +27,28 @@ struct Command {
 const std::vector<Command>& commands();
 
 /// Parses `args` against `options` (+ positional), handling --help: returns
-/// false when help was printed and the command should exit 0.
+/// false when help was printed and the command should exit 0. Default
+/// values are shown as the library writes them (shortest exact form).
 bool parse(const std::vector<std::string>& args, const std::string& usage,
            const po::options_description& options, const po::positional_options_description& positional,
            po::variables_map& vm);
 
-/// Adds --geodesic dijkstra|fmm, which sets `method` (its current value is
-/// the default) once the options are parsed.
-void add_geodesic_option(po::options_description& options, Geodesic& method);
+/// The options of the analysis of a mesh: one flag per analysis option
+/// (pipeline/analysis_options.h; --min-persistence for min_persistence),
+/// each defaulting to its value in `analysis` (the library's default unless
+/// the command changed it) and setting it once the options are parsed.
+po::options_description analysis_options(AnalysisOptions& analysis);
 
-/// Adds --min-persistence X, FeatureOptions::min_persistence (its current
-/// value is the default).
-void add_min_persistence_option(po::options_description& options, double& min_persistence);
+/// The names of the analysis options given on the command line (not left
+/// at their default), in table order.
+std::vector<std::string> given_analysis_options(const po::variables_map& vm);
+
+/// --all-components: every connected component, not the largest only.
+void add_components_option(po::options_description& options, bool& all_components);
+
+/// The options of graph matching: one flag per MatchingOptions field
+/// (--attribute-weight ...), each defaulting to its value in `matching`.
+po::options_description matching_options(MatchingOptions& matching);
 
 /// A mesh read and cleaned for a subcommand, and the time that took.
 struct LoadedMesh {

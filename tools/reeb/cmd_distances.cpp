@@ -13,6 +13,36 @@
 
 namespace reebkit::cli {
 
+namespace {
+
+/// The rows of the matrix and how they are ordered: the models of the .cla
+/// file `classes_path` in its order; without it, those of the classes the
+/// collection was indexed with (reeb index --classes), so that a PSB tool
+/// given that .cla reads the matrix right; else every entry in collection
+/// order.
+std::pair<std::vector<std::int64_t>, std::string> ordered_rows(const CollectionReader& collection,
+                                                               const std::string& path,
+                                                               const std::string& classes_path) {
+  if (!classes_path.empty()) {
+    try {
+      return {matrix_rows(collection, read_psb_classes(classes_path)), ".cla order of " + classes_path};
+    } catch (const Error& e) {
+      throw Error(path + ": " + e.what() + " (classes from " + classes_path + ")");
+    }
+  }
+  const Provenance& provenance = collection.provenance();
+  if (provenance.classes.empty()) return {matrix_rows(collection), "collection order"};
+  try {
+    return {matrix_rows(collection, provenance.classes),
+            ".cla order of " + provenance.classes_file + " (the classes the collection was indexed with)"};
+  } catch (const Error& e) {
+    return {matrix_rows(collection), "collection order (the classes of " + provenance.classes_file +
+                                         " do not fit the collection: " + e.what() + ")"};
+  }
+}
+
+}  // namespace
+
 int run_distances(const std::vector<std::string>& args) {
   po::options_description options("options");
   std::string path, output, classes_path, ascii;
@@ -21,24 +51,23 @@ int run_distances(const std::vector<std::string>& args) {
       ("collection", po::value(&path)->required(), "collection file written by reeb index")
       ("output,o", po::value(&output)->required(), "PSB binary matrix to write (float32, N x N, row-major)")
       ("cla", po::value(&classes_path),
-       "rows in the order of the models of this PSB .cla file (default: collection order, every mesh)")
+       "rows in the order of the models of this PSB .cla file (default: the .cla the collection was indexed "
+       "with, else collection order, every mesh)")
       ("ascii", po::value(&ascii), "also write the SHREC ASCII matrix (N lines of N numbers)")
       ("threads", po::value(&all_pairs.threads)->default_value(0), "threads (0: as many as OpenMP offers)");
+  options.add(matching_options(all_pairs.matching));
   po::positional_options_description positional;
   positional.add("collection", 1);
   po::variables_map vm;
-  if (!parse(args, "reeb distances collection.h5 -o dist.matrix [--cla classes.cla] [--ascii shrec.txt] [--threads N]",
+  if (!parse(args,
+             "reeb distances collection.h5 -o dist.matrix [--cla classes.cla] [--ascii shrec.txt] [--threads N] "
+             "[matching options]",
              options, positional, vm))
     return 0;
 
   const CollectionReader collection(path);
-  const std::vector<PsbClass> classes = classes_path.empty() ? std::vector<PsbClass>{} : read_psb_classes(classes_path);
-  std::vector<std::int64_t> rows;
-  try {
-    rows = matrix_rows(collection, classes);
-  } catch (const Error& e) {
-    throw Error(path + ": " + e.what() + " (classes from " + classes_path + ")");
-  }
+  const auto [rows, order] = ordered_rows(collection, path, classes_path);
+  std::cerr << "rows in the " << order << "\n";
   Timer timer;
   const PairwiseDistances distances = all_pairs_distances(collection, rows, all_pairs);
   const double seconds = timer.lap() / 1000;

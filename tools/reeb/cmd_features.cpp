@@ -105,19 +105,13 @@ int run_features(const std::vector<std::string>& args) {
   options.add_options()
       ("mesh", po::value(&mesh_path)->required(), "mesh file (.off .obj .ply .stl)")
       ("output,o", po::value(&json_path), "write the feature points as JSON")
-      ("ply", po::value(&ply_path), "write the mesh with f_q as colors and the feature points marked in red")
-      ("epsilon", po::value(&feature_options.epsilon)->default_value(feature_options.epsilon),
-       "relaxation radius of the extrema intersection (fraction of the geodesic diameter)")
-      ("start", po::value(&feature_options.start_vertex)->default_value(feature_options.start_vertex),
-       "start vertex v_r of the diameter search (index in the cleaned mesh)")
-      ("all-components", po::bool_switch(&all_components),
-       "process every connected component (default: the largest only)");
-  add_geodesic_option(options, feature_options.geodesic);
-  add_min_persistence_option(options, feature_options.min_persistence);
+      ("ply", po::value(&ply_path), "write the mesh with f_q as colors and the feature points marked in red");
+  add_components_option(options, all_components);
+  options.add(analysis_options(analysis));
   po::positional_options_description positional;
   positional.add("mesh", 1);
   po::variables_map vm;
-  if (!parse(args, "reeb features MESH [-o features.json] [--ply fq.ply] [--geodesic dijkstra|fmm] [--min-persistence X]",
+  if (!parse(args, "reeb features MESH [-o features.json] [--ply fq.ply] [--all-components] [analysis options]",
              options, positional, vm))
     return 0;
 

@@ -26,10 +26,8 @@ void print_summary(const std::vector<MeshAnalysis>& results) {
     vertices += r.mesh.num_vertices();
     features += static_cast<Index>(r.features.vertices.size());
     cycles += r.reeb.independent_cycles();
-    for (const ReebNode& n : r.reeb.nodes) {
-      ++count[static_cast<int>(n.type)];
-      leaves += n.end == NodeType::Termination;
-    }
+    leaves += r.reeb.leaf_count();
+    for (const ReebNode& n : r.reeb.nodes) ++count[static_cast<int>(n.type)];
     time.graph += r.timings.graph;
     time.features += r.timings.features;
     time.quotient += r.timings.quotient;
@@ -72,19 +70,15 @@ int run_graph(const std::vector<std::string>& args) {
       ("output,o", po::value(&json_path)->required(), "write the graph as JSON (schema: docs/formats.md)")
       ("ply", po::value(&ply_path), "write the mesh colored by segment, with node and fq vertex properties")
       ("obj", po::value(&obj_path), "write the graph and its skeleton as OBJ lines")
-      ("png", po::value(&png_path), "render the segmentation with the skeleton to a PNG (needs /usr/bin/python3)")
-      ("epsilon", po::value(&analysis.features.epsilon)->default_value(analysis.features.epsilon),
-       "relaxation radius of the extrema intersection (fraction of the geodesic diameter)")
-      ("all-components", po::bool_switch(&all_components),
-       "process every connected component (default: the largest only)");
-  add_geodesic_option(options, analysis.features.geodesic);
-  add_min_persistence_option(options, analysis.features.min_persistence);
+      ("png", po::value(&png_path), "render the segmentation with the skeleton to a PNG (needs /usr/bin/python3)");
+  add_components_option(options, all_components);
+  options.add(analysis_options(analysis));
   po::positional_options_description positional;
   positional.add("mesh", 1);
   po::variables_map vm;
   if (!parse(args,
              "reeb graph MESH -o graph.json [--ply segmentation.ply] [--obj skeleton.obj] [--png figure.png] "
-             "[--epsilon E] [--geodesic dijkstra|fmm] [--min-persistence X] [--all-components]",
+             "[--all-components] [analysis options]",
              options, positional, vm))
     return 0;
 

@@ -22,21 +22,20 @@ int run_index(const std::vector<std::string>& args) {
        "class labels from a PSB .cla file (model id = file name without extension)")
       ("threads", po::value(&extraction.threads)->default_value(0), "worker threads (0: as many as OpenMP offers)")
       ("resume", po::bool_switch(&extraction.resume),
-       "keep the entries already in the file and compute only new or changed meshes (content hash)")
-      ("epsilon", po::value(&extraction.analysis.features.epsilon)->default_value(extraction.analysis.features.epsilon),
-       "relaxation radius of the extrema intersection (fraction of the geodesic diameter)");
-  add_geodesic_option(options, extraction.analysis.features.geodesic);
-  add_min_persistence_option(options, extraction.analysis.features.min_persistence);
+       "keep the entries already in the file and compute only new or changed meshes (content hash); the "
+       "analysis options must be the file's");
+  options.add(analysis_options(extraction.analysis));
   po::positional_options_description positional;
   positional.add("input", -1);
   po::variables_map vm;
-  if (!parse(args, "reeb index INPUT... -o collection.h5 [--classes FILE.cla] [--threads N] [--resume] [--epsilon E] "
-             "[--geodesic dijkstra|fmm] [--min-persistence X]",
+  if (!parse(args, "reeb index INPUT... -o collection.h5 [--classes FILE.cla] [--threads N] [--resume] "
+             "[analysis options]",
              options, positional, vm))
     return 0;
 
   const std::vector<MeshInput> meshes = list_mesh_inputs(inputs);
-  const ClassMap classes = classes_path.empty() ? ClassMap{} : class_map(read_psb_classes(classes_path));
+  const std::vector<PsbClass> classes = classes_path.empty() ? std::vector<PsbClass>{} : read_psb_classes(classes_path);
+  extraction.classes_file = classes_path;
   extraction.command = "reeb index";
   for (const std::string& a : args) extraction.command += " " + a;
   ProgressBar bar = ProgressBar::for_stderr();

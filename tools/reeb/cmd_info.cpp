@@ -1,5 +1,6 @@
 // reeb info collection.h5: what a collection file holds (counts, classes,
-// failures) and where it came from (provenance, layout version).
+// failures) and where it came from (provenance: version, command, analysis
+// options, class file; layout version).
 #include "reeb/cli.h"
 #include "reebkit/store/collection_file.h"
 
@@ -37,6 +38,14 @@ int run_info(const std::vector<std::string>& args) {
             << "  written by reebkit " << provenance.reebkit_version << " on " << provenance.created << "\n"
             << "  command: " << provenance.command << "\n"
             << "  options: " << provenance.options << "\n"
+            << "  analysis options:";
+  for (const NamedOption& option : provenance.analysis_options)
+    std::cout << " " << option.name << "=" << option_text(option.value);
+  std::cout << "\n";
+  if (!provenance.classes.empty())
+    std::cout << "  classes from " << provenance.classes_file << " (" << provenance.classes.size()
+              << ", in its order)\n";
+  std::cout
             << reader.size() << " meshes: " << ok << " ok, " << failures.size() << " failed; " << nodes << " nodes, "
             << edges << " edges\n";
   std::cout << classes.size() << " classes" << (classes.empty() ? "" : ":") << "\n";

@@ -4,6 +4,8 @@
 #include "reeb/cli.h"
 #include "reebkit/core/error.h"
 #include "reebkit/matching/graph_matching.h"
+#include "reebkit/output/obj_lines.h"
+#include "reebkit/pipeline/analysis_options.h"
 #include "reebkit/pipeline/mesh_record.h"
 #include "reebkit/reeb/reeb_graph.h"
 #include "reebkit/store/collection_file.h"
@@ -14,26 +16,48 @@
 #include <iomanip>
 #include <iostream>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 namespace reebkit::cli {
 
 namespace {
 
-/// The entry named by `spec`: COLLECTION.h5:NAME, or a mesh file whose
-/// largest component is analysed with the default options.
-GraphRecord entry_for(const std::string& spec) {
+/// The collection file and entry name of a COLLECTION.h5:NAME spec; nothing for a mesh file.
+std::optional<std::pair<std::string, std::string>> collection_entry(const std::string& spec) {
   const auto colon = spec.find(".h5:");
-  if (colon != std::string::npos) {
-    const std::string path = spec.substr(0, colon + 3), name = spec.substr(colon + 4);
-    const CollectionReader reader(path);
-    const auto index = reader.find(name);
-    if (!index) throw Error(path + ": no mesh named '" + name + "' (reeb info lists them)");
-    GraphRecord entry = reader.entry(*index);
-    if (!entry.ok) throw Error(path + ": mesh '" + name + "' failed when indexed: " + entry.error);
-    return entry;
-  }
-  return analyze_mesh_file(spec, spec);
+  if (colon == std::string::npos) return std::nullopt;
+  return std::pair{spec.substr(0, colon + 3), spec.substr(colon + 4)};
+}
+
+/// The entry named by `spec`: COLLECTION.h5:NAME, or a mesh file whose
+/// largest component is analysed with `analysis`.
+GraphRecord entry_for(const std::string& spec, const AnalysisOptions& analysis) {
+  const auto in_collection = collection_entry(spec);
+  if (!in_collection) return analyze_mesh_file(spec, spec, analysis);
+  const auto& [path, name] = *in_collection;
+  const CollectionReader reader(path);
+  const auto index = reader.find(name);
+  if (!index) throw Error(path + ": no mesh named '" + name + "' (reeb info lists them)");
+  GraphRecord entry = reader.entry(*index);
+  if (!entry.ok) throw Error(path + ": mesh '" + name + "' failed when indexed: " + entry.error);
+  return entry;
+}
+
+/// The analysis of the mesh files among the two specs: the command line's,
+/// or the collection's when the other is a collection entry (then an
+/// analysis option given on the command line is an error: the two graphs
+/// would not be comparable).
+AnalysisOptions analysis_of_files(const std::string& a, const std::string& b, const AnalysisOptions& command_line,
+                                  const po::variables_map& vm) {
+  const auto ca = collection_entry(a), cb = collection_entry(b);
+  if (ca.has_value() == cb.has_value()) return command_line;
+  const std::string& collection = ca ? ca->first : cb->first;
+  const std::vector<std::string> given = given_analysis_options(vm);
+  if (!given.empty())
+    throw Error("the mesh file is analysed with the analysis options of " + collection +
+                ", as its entries were: drop the analysis option " + given.front());
+  return analysis_options_from(CollectionReader(collection).provenance().analysis_options);
 }
 
 std::string node_label(const GraphRecord& e, std::int32_t node) {
@@ -91,28 +115,30 @@ void write_obj(const std::string& path, const GraphRecord& a, const GraphRecord&
   if (!out) throw Error(path + ": cannot open for writing");
   const Box ba = x_range(a), bb = x_range(b);
   const double shift = ba[1] - bb[0] + 0.5 * (ba[1] - ba[0]);
-  out << "# reeb match " << a.name << " " << b.name << ": distance " << match.distance << "\n"
-      << "# vertices: node barycenters of A, then of B (shifted by " << shift << " along x)\n";
+  std::ostringstream title, vertices_note;
+  title << "reeb match " << a.name << " " << b.name << ": distance " << match.distance;
+  vertices_note << "vertices: node barycenters of A, then of B (shifted by " << shift << " along x)";
+  ObjLinesWriter obj(out);
+  obj.comment(title.str()).comment(vertices_note.str());
   const auto vertices = [&](const GraphRecord& e, double dx) {
     for (std::size_t i = 0; i < static_cast<std::size_t>(e.num_nodes()); ++i) {
       const double* g = &e.node_geometry[i * kGeomColumnCount];
-      out << "v " << g[kGeomBarycenterX] + dx << " " << g[kGeomBarycenterY] << " " << g[kGeomBarycenterZ] << "\n";
+      obj.point(Vec3(g[kGeomBarycenterX] + dx, g[kGeomBarycenterY], g[kGeomBarycenterZ]));
     }
   };
   vertices(a, 0.0);
   vertices(b, shift);
-  const auto edges = [&](const char* name, const GraphRecord& e, std::int32_t first) {
-    out << "o " << name << "\n";
-    for (std::int32_t k = 0; k < e.num_edges(); ++k)
-      out << "l " << first + e.edges[2 * static_cast<std::size_t>(k)] << " "
-          << first + e.edges[2 * static_cast<std::size_t>(k) + 1] << "\n";
+  const auto edges = [&](const char* name, const GraphRecord& e, Index first) {
+    obj.object(name);
+    for (std::size_t k = 0; k < static_cast<std::size_t>(e.num_edges()); ++k)
+      obj.line({first + e.edges[2 * k], first + e.edges[2 * k + 1]});
   };
   edges("graph_a", a, 1);
   edges("graph_b", b, 1 + a.num_nodes());
-  out << "o correspondence\n";
+  obj.object("correspondence");
   for (std::int32_t i = 0; i < a.num_nodes(); ++i) {
     const std::int32_t j = match.correspondence[static_cast<std::size_t>(i)];
-    if (j >= 0) out << "l " << 1 + i << " " << 1 + a.num_nodes() + j << "\n";
+    if (j >= 0) obj.line({1 + i, 1 + a.num_nodes() + j});
   }
   if (!out) throw Error(path + ": write failed");
 }
@@ -122,28 +148,24 @@ void write_obj(const std::string& path, const GraphRecord& a, const GraphRecord&
 int run_match(const std::vector<std::string>& args) {
   po::options_description options("options");
   std::string spec_a, spec_b, obj_path;
+  AnalysisOptions analysis;
   MatchingOptions matching;
   options.add_options()
       ("a", po::value(&spec_a)->required(), "first mesh: a mesh file or COLLECTION.h5:NAME")
       ("b", po::value(&spec_b)->required(), "second mesh: a mesh file or COLLECTION.h5:NAME")
-      ("obj", po::value(&obj_path), "write both graphs and lines between matched node barycenters as OBJ")
-      ("attribute-weight", po::value(&matching.attribute_weight)->default_value(matching.attribute_weight),
-       "weight of the node attribute differences")
-      ("structure-weight", po::value(&matching.structure_weight)->default_value(matching.structure_weight),
-       "weight of the local structure (degree, types, neighbour area)")
-      ("edge-weight", po::value(&matching.edge_weight)->default_value(matching.edge_weight),
-       "weight of edge inconsistency")
-      ("unmatched-cost", po::value(&matching.unmatched_cost)->default_value(matching.unmatched_cost),
-       "cost of deleting or inserting a node, per unit of node weight")
-      ("refine-rounds", po::value(&matching.refine_rounds)->default_value(matching.refine_rounds),
-       "rounds of edge-consistency refinement");
+      ("obj", po::value(&obj_path), "write both graphs and lines between matched node barycenters as OBJ");
+  options.add(analysis_options(analysis)).add(matching_options(matching));
   po::positional_options_description positional;
   positional.add("a", 1).add("b", 1);
   po::variables_map vm;
-  if (!parse(args, "reeb match A B [--obj lines.obj]   (A, B: mesh files or collection.h5:NAME)", options,
-             positional, vm))
+  if (!parse(args,
+             "reeb match A B [--obj lines.obj] [analysis options] [matching options]\n"
+             "(A, B: mesh files or collection.h5:NAME; a mesh file matched with a collection entry is analysed "
+             "with the collection's analysis options)",
+             options, positional, vm))
     return 0;
-  const GraphRecord a = entry_for(spec_a), b = entry_for(spec_b);
+  const AnalysisOptions files = analysis_of_files(spec_a, spec_b, analysis, vm);
+  const GraphRecord a = entry_for(spec_a, files), b = entry_for(spec_b, files);
   const GraphMatch match = match_graphs(a, b, matching);
   print_match(a, b, match);
   if (!obj_path.empty()) {

@@ -5,6 +5,7 @@
 #include "reebkit/core/error.h"
 #include "reebkit/core/timer.h"
 #include "reebkit/io/json_writer.h"
+#include "reebkit/pipeline/analysis_options.h"
 #include "reebkit/pipeline/mesh_record.h"
 #include "reebkit/retrieval/query.h"
 
@@ -16,11 +17,11 @@ namespace reebkit::cli {
 namespace {
 
 /// The query's entry: the collection's own when `query` names one of its
-/// meshes, otherwise the mesh file analysed as reeb index does (largest component).
-GraphRecord query_entry(const CollectionReader& collection, const std::string& query,
-                        const AnalysisOptions& analysis) {
+/// meshes, otherwise the mesh file analysed as reeb index analysed the
+/// collection (largest component, the collection's analysis options).
+GraphRecord query_entry(const CollectionReader& collection, const std::string& query) {
   if (const auto index = collection.find(query)) return collection.entry(*index);
-  return analyze_mesh_file(query, query, analysis);
+  return analyze_mesh_file(query, query, analysis_options_from(collection.provenance().analysis_options));
 }
 
 void write_json(std::ostream& out, const std::string& collection, const std::string& query, bool in_collection,
@@ -52,7 +53,6 @@ int run_query(const std::vector<std::string>& args) {
   po::options_description options("options");
   std::string path, query;
   QueryOptions query_options;
-  AnalysisOptions analysis;
   bool json = false;
   options.add_options()
       ("collection", po::value(&path)->required(), "collection file written by reeb index")
@@ -63,20 +63,21 @@ int run_query(const std::vector<std::string>& args) {
        "nearest graph signatures reranked by graph matching (>= the collection size: every mesh)")
       ("threads", po::value(&query_options.threads)->default_value(query_options.threads),
        "threads matching the candidates (0: as many as OpenMP offers)")
-      ("json", po::bool_switch(&json), "print the ranked list as JSON")
-      ("epsilon", po::value(&analysis.features.epsilon)->default_value(analysis.features.epsilon),
-       "for a mesh file: relaxation radius of the extrema intersection (use the collection's)");
+      ("json", po::bool_switch(&json), "print the ranked list as JSON");
+  options.add(matching_options(query_options.matching));
   po::positional_options_description positional;
   positional.add("collection", 1).add("query", 1);
   po::variables_map vm;
-  if (!parse(args, "reeb query collection.h5 MESH_OR_NAME [-k 10] [--candidates 100] [--threads N] [--json]", options,
-             positional, vm))
+  if (!parse(args,
+             "reeb query collection.h5 MESH_OR_NAME [-k 10] [--candidates 100] [--threads N] [--json] "
+             "[matching options]\n(a mesh file is analysed with the collection's analysis options)",
+             options, positional, vm))
     return 0;
 
   const CollectionReader collection(path);
   Timer timer;
   const bool in_collection = collection.find(query).has_value();
-  const GraphRecord entry = query_entry(collection, query, analysis);
+  const GraphRecord entry = query_entry(collection, query);
   if (!entry.ok) throw Error(path + ": mesh '" + query + "' failed when indexed: " + entry.error);
   const double extract_ms = timer.lap();
   const SearchableCollection searchable = load_searchable(collection);

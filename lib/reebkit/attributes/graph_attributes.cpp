@@ -41,13 +41,13 @@
 #include "reebkit/core/error.h"
 #include "reebkit/geodesic/dijkstra.h"
 #include "reebkit/mesh/hole_filling.h"
+#include "reebkit/mesh/surface_sampling.h"
 
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <random>
 #include <string>
 
 namespace reebkit {
@@ -227,40 +227,17 @@ TriangleSums triangle_sums(const Mesh& mesh, Index original_vertices, const std:
   return sums;
 }
 
-/// A uniform number in [0, 1) from 53 random bits (the same on every platform,
-/// unlike std::uniform_real_distribution).
-double unit(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
-
-/// Where to draw random points of a surface from: triangles with cumulative
-/// weights (area, or area times a region's share of the triangle).
-struct Sampler {
-  const Index* triangle;
-  const double* cumulative;
-  std::size_t size;
-  double total() const { return size ? cumulative[size - 1] : 0.0; }
-};
-
 /// Adds to h (bins of `bin_width`, the first centred at bin_width / 2) the
 /// Euclidean distances between all pairs of `samples` random points of
 /// `from`, divided by sqrt(its total weight): the D2 shape distribution of
 /// Osada et al. 2002. Each distance is split linearly between the two
 /// nearest bin centres, so that the histogram moves continuously with the
 /// distances (exact similarity invariance); the result sums to 1.
-void shape_distribution(const Mesh& mesh, const Sampler& from, int samples, double bin_width, std::uint64_t seed,
-                        double* h, int bins) {
+void shape_distribution(const Mesh& mesh, const WeightedTriangles& from, int samples, double bin_width,
+                        std::uint64_t seed, double* h, int bins) {
   std::fill_n(h, bins, 0.0);
   if (!(from.total() > 0.0) || samples < 2) return;
-  std::mt19937_64 rng(seed);
-  std::vector<Vec3> points(at(samples));
-  for (Vec3& p : points) {
-    const double* end = from.cumulative + from.size;
-    const auto k = std::min(std::upper_bound(from.cumulative, end, unit(rng) * from.total()) - from.cumulative,
-                            static_cast<std::ptrdiff_t>(from.size) - 1);
-    const Index t = from.triangle[k];
-    const double r1 = std::sqrt(unit(rng)), r2 = unit(rng);  // uniform on the triangle
-    p = (1.0 - r1) * point(mesh, mesh.triangles(t, 0)) + r1 * (1.0 - r2) * point(mesh, mesh.triangles(t, 1)) +
-        r1 * r2 * point(mesh, mesh.triangles(t, 2));
-  }
+  const std::vector<Vec3> points = sample_surface(mesh, from, samples, seed);
   const double scale = 1.0 / (bin_width * std::sqrt(from.total()));
   for (int i = 0; i < samples; ++i)
     for (int j = i + 1; j < samples; ++j) {
@@ -281,14 +258,12 @@ std::vector<double> shape_histograms(const Mesh& mesh, Index original_vertices, 
   // weights, grouped by region; the surface as read only.
   const std::size_t nodes = reeb.nodes.size();
   std::vector<std::size_t> first(nodes + 1, 0);
-  std::vector<Index> original;
+  std::vector<Index> triangles;
   for (Index t = 0; t < mesh.num_triangles(); ++t)
-    if (is_original(mesh, t, original_vertices)) original.push_back(t);
-  std::vector<double> whole(original.size());
-  for (std::size_t k = 0; k < original.size(); ++k)
-    whole[k] = (k ? whole[k - 1] : 0.0) + triangle_area(mesh, original[k]);
-  shape_distribution(mesh, {original.data(), whole.data(), original.size()}, kGlobalShapeSamples, kGlobalShapeBinWidth,
-                     2006, global, kGlobalShapeBins);
+    if (is_original(mesh, t, original_vertices)) triangles.push_back(t);
+  const TriangleAreas whole = triangle_areas(mesh, std::move(triangles));
+  const std::vector<Index>& original = whole.triangle;
+  shape_distribution(mesh, whole.view(), kGlobalShapeSamples, kGlobalShapeBinWidth, 2006, global, kGlobalShapeBins);
 
   for (const Index t : original)
     for_each_region(triangle_labels(mesh, reeb, t), [&](Index node, double) { ++first[at(node) + 1]; });
@@ -403,7 +378,7 @@ GraphAttributes compute_attributes(const Mesh& mesh, const MeshGraph& graph, con
     return static_cast<Index>(std::count_if(reeb.nodes.begin(), reeb.nodes.end(), predicate));
   };
   sig[kSigCounts + 0] = scaled_count(reeb.num_nodes());
-  sig[kSigCounts + 1] = scaled_count(count_if([](const ReebNode& n) { return n.end == NodeType::Termination; }));
+  sig[kSigCounts + 1] = scaled_count(reeb.leaf_count());
   sig[kSigCounts + 2] = scaled_count(count_if([](const ReebNode& n) { return n.type == NodeType::Bifurcation; }));
   sig[kSigCounts + 3] = scaled_count(count_if([](const ReebNode& n) { return n.type == NodeType::Junction; }));
   sig[kSigCounts + 4] = scaled_count(reeb.independent_cycles());

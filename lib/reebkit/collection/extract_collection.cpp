@@ -4,6 +4,7 @@
 #include "reebkit/core/timer.h"
 #include "reebkit/io/content_hash.h"
 #include "reebkit/io/json_writer.h"
+#include "reebkit/pipeline/analysis_options.h"
 #include "reebkit/pipeline/mesh_record.h"
 #include "reebkit/store/collection_file.h"
 
@@ -168,6 +169,17 @@ std::vector<std::uint64_t> hash_inputs(const std::vector<MeshInput>& inputs, int
   return hashes;
 }
 
+/// Throws Error unless the collection file `path` was analysed with `analysis`.
+void refuse_other_analysis(const std::filesystem::path& path, const AnalysisOptions& analysis) {
+  const AnalysisOptions indexed = analysis_options_from(CollectionReader(path).provenance().analysis_options);
+  const std::vector<OptionDifference> differences = analysis_option_differences(indexed, analysis);
+  if (differences.empty()) return;
+  std::string message = path.string() + ": cannot resume: the file was indexed with other analysis options:";
+  for (const OptionDifference& d : differences)
+    message += "\n  " + d.name + ": " + d.first + " in the file, " + d.second + " now";
+  throw Error(message + "\n(resume with the file's options, or index into a new file)");
+}
+
 }  // namespace
 
 std::string analysis_options_json(const AnalysisOptions& options) {
@@ -200,11 +212,12 @@ std::string analysis_options_json(const AnalysisOptions& options) {
   return compact;
 }
 
-ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const ClassMap& classes,
+ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const std::vector<PsbClass>& classes,
                                      const std::filesystem::path& output, const ExtractionOptions& options) {
   if (options.batch_size < 1) throw InvalidArgument("extract_collection: batch_size must be >= 1");
   if (options.threads < 0) throw InvalidArgument("extract_collection: threads must be >= 0");
   if (!options.analysis.reeb_graph) throw InvalidArgument("extract_collection: the analysis must build the Reeb graph");
+  if (options.resume && std::filesystem::exists(output)) refuse_other_analysis(output, options.analysis);
   const Stopwatch clock;
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
   ExtractionSummary summary;
@@ -213,7 +226,11 @@ ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const
 
   Provenance provenance;
   provenance.options = analysis_options_json(options.analysis);
+  provenance.analysis_options = named_analysis_options(options.analysis);
   provenance.command = options.command;
+  provenance.classes = classes;
+  provenance.classes_file = options.classes_file;
+  const ClassMap class_of_model = class_map(classes);
 
   const std::vector<std::uint64_t> hashes = hash_inputs(inputs, threads);
   std::unordered_map<std::string, std::uint64_t> current;  // input name -> hash
@@ -262,7 +279,7 @@ ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const
       todo.size(), threads, static_cast<std::size_t>(options.batch_size),
       [&](std::size_t k) {
         const MeshInput& input = inputs[todo[k]];
-        return compute_entry(input, hashes[todo[k]], class_of(classes, input.name), options.analysis);
+        return compute_entry(input, hashes[todo[k]], class_of(class_of_model, input.name), options.analysis);
       },
       sink);
   sink.timed([&] { writer->close(); });

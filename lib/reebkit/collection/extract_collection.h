@@ -29,6 +29,7 @@ struct ExtractionOptions {
   AnalysisOptions analysis;       ///< the pipeline run on each mesh (largest connected component)
   ProgressSink progress;          ///< called after each entry written; empty = silent
   std::string command;            ///< the command line, stored as provenance
+  std::string classes_file;       ///< the .cla file the classes come from, stored with them
 };
 
 struct FailedMesh {
@@ -51,8 +52,9 @@ std::string analysis_options_json(const AnalysisOptions& options);
 
 /// Indexes `inputs` into the collection file `output`: per mesh, load_mesh
 /// (largest component), analyze_mesh, compute_attributes and
-/// make_graph_record, with the class from `classes` (class_of) and the
-/// content hash of its file. Any exception on a mesh becomes a failed entry
+/// make_graph_record, with its class in `classes` (class_of) and the
+/// content hash of its file. The file keeps the analysis options (by name,
+/// named_analysis_options) and `classes` in their order. Any exception on a mesh becomes a failed entry
 /// with its message; the batch goes on. Entries are appended in input order
 /// and checkpointed (options), so an interrupted run leaves a file holding
 /// every entry up to the last checkpoint.
@@ -64,10 +66,12 @@ std::string analysis_options_json(const AnalysisOptions& options);
 /// entries, into `output` + ".rewrite" and renamed over `output` at the end
 /// (until then `output` keeps its old content), so that a name appears at
 /// most once in a collection file and readers need no rule for duplicates.
-/// Entries of meshes that are no longer among the inputs are kept.
+/// Entries of meshes that are no longer among the inputs are kept. Resuming
+/// a file analysed with other analysis options throws Error before any work,
+/// naming the file and each differing option with both values.
 /// Throws InvalidArgument on bad options and Error from the writer (the file
 /// cannot be created or written).
-ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const ClassMap& classes,
+ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const std::vector<PsbClass>& classes,
                                      const std::filesystem::path& output, const ExtractionOptions& options = {});
 
 }  // namespace reebkit

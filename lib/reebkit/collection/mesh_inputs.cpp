@@ -29,14 +29,14 @@ bool is_list_file(const fs::path& path) {
   return ext == ".txt" || ext == ".lst";
 }
 
-/// Every mesh file below `folder`, sorted by name (the relative path).
+/// Every mesh file below `folder`, in the natural order of their names (relative paths).
 void list_folder(const fs::path& folder, std::vector<MeshInput>& out) {
   std::vector<MeshInput> found;
   for (const fs::directory_entry& e : fs::recursive_directory_iterator(folder)) {
     if (e.is_regular_file() && is_mesh_file(e.path()))
       found.push_back({e.path(), e.path().lexically_relative(folder).generic_string()});
   }
-  std::sort(found.begin(), found.end(), [](const MeshInput& a, const MeshInput& b) { return a.name < b.name; });
+  std::sort(found.begin(), found.end(), [](const MeshInput& a, const MeshInput& b) { return natural_less(a.name, b.name); });
   out.insert(out.end(), found.begin(), found.end());
 }
 
@@ -58,7 +58,35 @@ void list_file(const fs::path& list, std::vector<MeshInput>& out, std::vector<st
   }
 }
 
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+/// The run of digits of `text` starting at `at`, without its leading zeros; `at` moves past the run.
+std::string_view digit_run(std::string_view text, std::size_t& at) {
+  while (at < text.size() && text[at] == '0' && at + 1 < text.size() && is_digit(text[at + 1])) ++at;
+  const std::size_t begin = at;
+  while (at < text.size() && is_digit(text[at])) ++at;
+  return text.substr(begin, at - begin);
+}
+
 }  // namespace
+
+bool natural_less(std::string_view a, std::string_view b) {
+  std::size_t i = 0, j = 0;
+  while (i < a.size() && j < b.size()) {
+    if (is_digit(a[i]) && is_digit(b[j])) {
+      // Values compare by length without leading zeros, then digit by digit: no overflow.
+      const std::string_view x = digit_run(a, i), y = digit_run(b, j);
+      if (x.size() != y.size()) return x.size() < y.size();
+      if (x != y) return x < y;
+    } else {
+      if (a[i] != b[j]) return static_cast<unsigned char>(a[i]) < static_cast<unsigned char>(b[j]);
+      ++i;
+      ++j;
+    }
+  }
+  if ((i < a.size()) != (j < b.size())) return j < b.size();  // a prefix comes first
+  return a < b;
+}
 
 std::vector<MeshInput> list_mesh_inputs(const std::vector<std::string>& inputs) {
   std::vector<MeshInput> out;

@@ -5,6 +5,7 @@
 #include "reebkit/io/ply.h"
 #include "reebkit/mesh/hole_filling.h"
 #include "reebkit/output/colormap.h"
+#include "reebkit/output/obj_lines.h"
 #include "reebkit/pipeline/mesh_record.h"
 
 #include <fstream>
@@ -197,37 +198,25 @@ void write_segmentation_ply(const std::filesystem::path& path, const std::vector
 void write_skeleton_obj(const std::filesystem::path& path, const std::vector<MeshAnalysis>& components) {
   check_components("write_skeleton_obj", components);
   std::ofstream out = open_for_writing(path);
-  out.precision(17);
-  out << "# reebkit: dual Reeb graph (nodes at their barycenters) and topological skeleton of "
-      << components.front().mesh.source << "\n";
-  // OBJ vertex numbers are 1-based and run on across objects.
-  out << "o reeb_graph\n";
-  Index first = 1;  // OBJ number of the current component's node 0
+  ObjLinesWriter obj(out);
+  obj.comment("reebkit: dual Reeb graph (nodes at their barycenters) and topological skeleton of " +
+              components.front().mesh.source);
+  obj.object("reeb_graph");
   for (const MeshAnalysis& r : components) {
-    for (const ReebNode& node : r.reeb.nodes)
-      out << "v " << node.barycenter.x() << " " << node.barycenter.y() << " " << node.barycenter.z() << "\n";
-    for (const auto& [a, b] : r.reeb.edges) out << "l " << first + a << " " << first + b << "\n";
-    first += r.reeb.num_nodes();
+    const Index first = obj.points() + 1;  // OBJ number of the component's node 0
+    for (const ReebNode& node : r.reeb.nodes) obj.point(node.barycenter);
+    for (const auto& [a, b] : r.reeb.edges) obj.line({first + a, first + b});
   }
-  out << "o skeleton\n";
-  Index next = first;  // OBJ number of the next skeleton point
+  obj.object("skeleton");
   for (const MeshAnalysis& r : components) {
-    std::vector<Index> start;  // OBJ number of each node's first skeleton point
+    std::vector<std::vector<Index>> polyline;  // OBJ numbers of each node's skeleton points
     for (const ReebNode& node : r.reeb.nodes) {
-      start.push_back(next);
-      for (const Vec3& p : node.skeleton) out << "v " << p.x() << " " << p.y() << " " << p.z() << "\n";
-      if (node.skeleton.size() > 1) {
-        out << "l";
-        for (std::size_t k = 0; k < node.skeleton.size(); ++k) out << " " << next + static_cast<Index>(k);
-        out << "\n";
-      }
-      next += static_cast<Index>(node.skeleton.size());
+      polyline.emplace_back();
+      for (const Vec3& p : node.skeleton) polyline.back().push_back(obj.point(p));
+      if (polyline.back().size() > 1) obj.line(polyline.back());
     }
-    for (const auto& [a, b] : r.reeb.edges) {
-      const Index last_of_a = start[static_cast<std::size_t>(a)] +
-                              static_cast<Index>(r.reeb.nodes[static_cast<std::size_t>(a)].skeleton.size()) - 1;
-      out << "l " << last_of_a << " " << start[static_cast<std::size_t>(b)] << "\n";
-    }
+    for (const auto& [a, b] : r.reeb.edges)
+      obj.line({polyline[static_cast<std::size_t>(a)].back(), polyline[static_cast<std::size_t>(b)].front()});
   }
   check_written(out, path);
 }

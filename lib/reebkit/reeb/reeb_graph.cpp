@@ -40,6 +40,11 @@ Index ReebGraph::connected_components() const {
 
 Index ReebGraph::independent_cycles() const { return num_edges() - num_nodes() + connected_components(); }
 
+Index ReebGraph::leaf_count() const {
+  return static_cast<Index>(
+      std::count_if(nodes.begin(), nodes.end(), [](const ReebNode& n) { return n.end == NodeType::Termination; }));
+}
+
 namespace {
 
 /// The level lines of C(t), kept up to date as the propagation absorbs one

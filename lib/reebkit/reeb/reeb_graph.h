@@ -83,6 +83,9 @@ struct ReebGraph {
   /// a closed orientable surface when every handle shows up as a split and
   /// a later merge of level lines.
   Index independent_cycles() const;
+  /// Leaves: the nodes whose region ends in a termination (eq. 11), one per
+  /// feature point reached by its own level line.
+  Index leaf_count() const;
 };
 
 struct ReebOptions {

@@ -146,12 +146,118 @@ std::string read_string_attribute(const H5::H5Object& object, const char* name) 
   return value;
 }
 
+/// A named option as a typed scalar attribute of `group`: int64, float64 or a UTF-8 string.
+void write_option_attribute(H5::Group& group, const NamedOption& option) {
+  const H5::DataSpace scalar(H5S_SCALAR);
+  if (const auto* integer = std::get_if<std::int64_t>(&option.value))
+    group.createAttribute(option.name, H5::PredType::NATIVE_INT64, scalar).write(H5::PredType::NATIVE_INT64, integer);
+  else if (const auto* number = std::get_if<double>(&option.value))
+    group.createAttribute(option.name, H5::PredType::NATIVE_DOUBLE, scalar).write(H5::PredType::NATIVE_DOUBLE, number);
+  else
+    write_string_attribute(group, option.name.c_str(), std::get<std::string>(option.value));
+}
+
+/// Every attribute of the group `name` as a named option (none when the group is absent).
+std::vector<NamedOption> read_option_attributes(const H5::H5File& file, const char* name) {
+  std::vector<NamedOption> out;
+  if (!file.nameExists(name)) return out;
+  const H5::Group group = file.openGroup(name);
+  for (int i = 0; i < group.getNumAttrs(); ++i) {
+    const H5::Attribute attribute = group.openAttribute(static_cast<unsigned>(i));
+    NamedOption option{attribute.getName(), {}};
+    switch (attribute.getTypeClass()) {
+      case H5T_INTEGER: {
+        std::int64_t value = 0;
+        attribute.read(H5::PredType::NATIVE_INT64, &value);
+        option.value = value;
+        break;
+      }
+      case H5T_FLOAT: {
+        double value = 0;
+        attribute.read(H5::PredType::NATIVE_DOUBLE, &value);
+        option.value = value;
+        break;
+      }
+      case H5T_STRING: {
+        std::string value;
+        attribute.read(attribute.getStrType(), value);
+        option.value = value;
+        break;
+      }
+      default:
+        throw H5::AttributeIException("read_option_attributes", std::string(name) + "/" + option.name +
+                                                                    " is not an integer, a number or a string");
+    }
+    out.push_back(std::move(option));
+  }
+  return out;
+}
+
+/// A one-dimensional attribute of UTF-8 strings.
+void write_strings_attribute(H5::H5Object& object, const char* name, const std::vector<const char*>& values) {
+  const H5::StrType type = utf8_string_type();
+  const hsize_t dims[1] = {values.size()};
+  const char* none = nullptr;  // HDF5 wants a buffer even for no values
+  object.createAttribute(name, type, H5::DataSpace(1, dims)).write(type, values.empty() ? &none : values.data());
+}
+
+std::vector<std::string> read_strings_attribute(const H5::H5Object& object, const char* name) {
+  const H5::Attribute attribute = object.openAttribute(name);
+  const H5::DataSpace space = attribute.getSpace();
+  std::vector<char*> raw(static_cast<std::size_t>(space.getSimpleExtentNpoints()), nullptr);
+  if (raw.empty()) return {};
+  const H5::StrType type = utf8_string_type();
+  attribute.read(type, raw.data());
+  std::vector<std::string> out(raw.begin(), raw.end());
+  H5::DataSet::vlenReclaim(raw.data(), type, space);
+  return out;
+}
+
+/// The group `classes`, as attributes (datasets of variable-length strings
+/// cost about 20 ms each to create): `name`, `parent` (C,) and
+/// `model_offset` (C + 1,): class c lists the models
+/// `model[model_offset[c]:model_offset[c + 1]]` of `model` (M,), in .cla
+/// order; `file` names the .cla file.
+void write_classes(H5::H5File& file, const std::vector<PsbClass>& classes, const std::string& source) {
+  H5::Group group = file.createGroup("classes");
+  std::vector<const char*> names, parents, models;
+  std::vector<std::int64_t> offset = {0};
+  for (const PsbClass& c : classes) {
+    names.push_back(c.name.c_str());
+    parents.push_back(c.parent.c_str());
+    for (const std::string& m : c.models) models.push_back(m.c_str());
+    offset.push_back(static_cast<std::int64_t>(models.size()));
+  }
+  write_strings_attribute(group, "name", names);
+  write_strings_attribute(group, "parent", parents);
+  write_strings_attribute(group, "model", models);
+  const hsize_t dims[1] = {offset.size()};
+  group.createAttribute("model_offset", H5::PredType::NATIVE_INT64, H5::DataSpace(1, dims))
+      .write(H5::PredType::NATIVE_INT64, offset.data());
+  write_string_attribute(group, "file", source);
+}
+
+void read_classes(const H5::H5File& file, Provenance& provenance) {
+  if (!file.nameExists("classes")) return;
+  const H5::Group group = file.openGroup("classes");
+  const std::vector<std::string> names = read_strings_attribute(group, "name"),
+                                 parents = read_strings_attribute(group, "parent"),
+                                 models = read_strings_attribute(group, "model");
+  const H5::Attribute offsets = group.openAttribute("model_offset");
+  std::vector<std::int64_t> offset(static_cast<std::size_t>(offsets.getSpace().getSimpleExtentNpoints()));
+  offsets.read(H5::PredType::NATIVE_INT64, offset.data());
+  if (offset.size() != names.size() + 1 || parents.size() != names.size() || offset.front() != 0 ||
+      offset.back() != static_cast<std::int64_t>(models.size()) || !std::is_sorted(offset.begin(), offset.end()))
+    throw H5::GroupIException("read_classes", "the classes group is inconsistent");
+  for (std::size_t c = 0; c < names.size(); ++c)
+    provenance.classes.push_back({names[c], parents[c],
+                                  std::vector<std::string>(models.begin() + offset[c], models.begin() + offset[c + 1])});
+  provenance.classes_file = read_string_attribute(group, "file");
+}
+
 template <std::size_t N>
 void write_columns_attribute(H5::DataSet& dataset, const std::array<const char*, N>& names) {
-  const H5::StrType type = utf8_string_type();
-  const hsize_t dims[1] = {N};
-  H5::Attribute attribute = dataset.createAttribute("columns", type, H5::DataSpace(1, dims));
-  attribute.write(type, names.data());
+  write_strings_attribute(dataset, "columns", std::vector<const char*>(names.begin(), names.end()));
 }
 
 std::string utc_now() {
@@ -363,6 +469,8 @@ Snapshot read_snapshot(const H5::H5File& file, const Tables& t) {
   s.provenance.options = read_string_attribute(file, "options");
   s.provenance.command = read_string_attribute(file, "command");
   s.provenance.created = read_string_attribute(file, "created");
+  s.provenance.analysis_options = read_option_attributes(file, "analysis_options");
+  read_classes(file, s.provenance);
   return s;
 }
 
@@ -380,7 +488,7 @@ OpenCollection open_collection(const fs::path& path) {
   if (version != kCollectionLayoutVersion)
     fail(path, version < 0 ? "not a reebkit collection file (no `layout` attribute)"
                            : "collection layout version " + std::to_string(version) + ", this reebkit reads " +
-                                 std::to_string(kCollectionLayoutVersion));
+                                 std::to_string(kCollectionLayoutVersion) + ": re-index the meshes with this version");
   guarded(path, "reading", [&] {
     c.tables = open_tables(c.file);
     c.snapshot = read_snapshot(c.file, c.tables);
@@ -554,6 +662,9 @@ void CollectionWriter::Impl::create(const fs::path& target, const Provenance& pr
   write_string_attribute(file, "options", provenance.options);
   write_string_attribute(file, "command", provenance.command);
   write_string_attribute(file, "created", provenance.created.empty() ? utc_now() : provenance.created);
+  H5::Group analysis = file.createGroup("analysis_options");
+  for (const NamedOption& option : provenance.analysis_options) write_option_attribute(analysis, option);
+  if (!provenance.classes.empty()) write_classes(file, provenance.classes, provenance.classes_file);
 
   for (const TableSpec& spec : table_specs()) {
     Table& t = tables.*spec.member;

@@ -1,10 +1,13 @@
 // The HDF5 file of an indexed collection: one record per mesh with its
 // attributed Reeb graph, in flat datasets with CSR offsets so that Python
-// (h5py + numpy) reads it without reebkit. Layout: docs/collection-file.md.
-// Written from one thread only.
+// (h5py + numpy) reads it without reebkit, and where it came from: the
+// analysis options (named, typed), the classes and the command. Layout:
+// docs/collection-file.md. Written from one thread only.
 #pragma once
 
 #include "reebkit/attributes/graph_record.h"
+#include "reebkit/core/option_value.h"
+#include "reebkit/io/psb_classes.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -16,14 +19,23 @@
 namespace reebkit {
 
 /// Version of the dataset layout, stored as the file attribute `layout`.
-inline constexpr int kCollectionLayoutVersion = 2;
+/// 3: the groups `analysis_options` and `classes`.
+inline constexpr int kCollectionLayoutVersion = 3;
 
-/// Where the file came from, stored as file attributes.
+/// Where the file came from: file attributes, and two groups.
 struct Provenance {
   std::string reebkit_version = REEBKIT_VERSION;
   std::string options;   ///< the analysis options, as JSON text
+  /// The analysis options by name, each a typed attribute of the group
+  /// `analysis_options` (the store does not interpret them: see
+  /// pipeline/analysis_options.h).
+  std::vector<NamedOption> analysis_options;
   std::string command;   ///< the command line that made the file
   std::string created;   ///< ISO 8601 date and time (UTC); filled by the writer when empty
+  /// The classes the meshes were labelled from, in the order of their .cla
+  /// file (the group `classes`; empty: none), and that file.
+  std::vector<PsbClass> classes;
+  std::string classes_file;
 };
 
 /// Appends entries to a collection file. Entries are buffered and written in

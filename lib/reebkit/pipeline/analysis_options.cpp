@@ -1,0 +1,97 @@
+#include "reebkit/pipeline/analysis_options.h"
+
+#include "reebkit/core/error.h"
+
+#include <algorithm>
+#include <limits>
+#include <type_traits>
+
+namespace reebkit {
+namespace {
+
+OptionValue to_value(double x) { return x; }
+OptionValue to_value(Geodesic method) { return std::string(geodesic_name(method)); }
+template <typename T, typename = std::enable_if_t<std::is_integral_v<T>>>
+OptionValue to_value(T x) {
+  return static_cast<std::int64_t>(x);
+}
+
+void from_value(const OptionValue& value, double& x, const std::string&) { x = std::get<double>(value); }
+void from_value(const OptionValue& value, Geodesic& method, const std::string&) {
+  method = parse_geodesic(std::get<std::string>(value));
+}
+template <typename T, typename = std::enable_if_t<std::is_integral_v<T>>>
+void from_value(const OptionValue& value, T& x, const std::string& name) {
+  const std::int64_t v = std::get<std::int64_t>(value);
+  if (v < std::numeric_limits<T>::min() || v > std::numeric_limits<T>::max())
+    throw InvalidArgument("analysis option " + name + ": " + std::to_string(v) + " is out of range");
+  x = static_cast<T>(v);
+}
+
+/// The row of the option `member` of the part `group` of AnalysisOptions.
+template <typename Group, typename T>
+AnalysisOptionField field(const char* name, const char* help, Group AnalysisOptions::*group, T Group::*member) {
+  return {name, help, [=](const AnalysisOptions& o) { return to_value((o.*group).*member); },
+          [=, name = std::string(name)](AnalysisOptions& o, const OptionValue& value) {
+            const OptionValue kind = to_value(T{});
+            if (value.index() != kind.index())
+              throw InvalidArgument("analysis option " + name + ": expected " + option_kind(kind) + ", got " +
+                                    option_kind(value) + " '" + option_text(value) + "'");
+            from_value(value, (o.*group).*member, name);
+          }};
+}
+
+}  // namespace
+
+const std::vector<AnalysisOptionField>& analysis_option_fields() {
+  using A = AnalysisOptions;
+  static const std::vector<AnalysisOptionField> fields = {
+      field("max_hole_loop", "close each boundary loop no longer than this fraction of sqrt(surface area) before "
+            "the analysis (0: keep every hole)", &A::holes, &HoleFillingOptions::max_loop_length),
+      field("epsilon", "relaxation radius of the extrema intersection, eq. (6) (fraction of the geodesic diameter)",
+            &A::features, &FeatureOptions::epsilon),
+      field("geodesic", "geodesic distances: dijkstra (shortest edge paths) or fmm (fast marching across the "
+            "triangles, less sensitive to the sampling)", &A::features, &FeatureOptions::geodesic),
+      field("min_persistence", "drop the extrema of f1 and f2 whose topological persistence is below this "
+            "fraction of the geodesic diameter before the relaxed intersection (0: every local extremum, as the "
+            "paper)", &A::features, &FeatureOptions::min_persistence),
+      field("start_vertex", "start vertex v_r of the diameter search, eq. (2) (index in the cleaned mesh)",
+            &A::features, &FeatureOptions::start_vertex),
+      field("max_extra_sweeps", "extra passes per diameter sweep at most (0: the paper's single double sweep)",
+            &A::features, &FeatureOptions::max_extra_sweeps),
+      field("extra_seeds", "further diameter sweeps from farthest-point seeds", &A::features,
+            &FeatureOptions::extra_seeds),
+      field("skeleton_levels", "levels of f the skeleton is thinned to (a point per level a line absorbs)",
+            &A::reeb, &ReebOptions::skeleton_levels),
+  };
+  return fields;
+}
+
+std::vector<NamedOption> named_analysis_options(const AnalysisOptions& options) {
+  std::vector<NamedOption> out;
+  for (const AnalysisOptionField& f : analysis_option_fields()) out.push_back({f.name, f.get(options)});
+  return out;
+}
+
+AnalysisOptions analysis_options_from(const std::vector<NamedOption>& named) {
+  AnalysisOptions options;
+  for (const NamedOption& option : named) {
+    const auto& fields = analysis_option_fields();
+    const auto f = std::find_if(fields.begin(), fields.end(),
+                                [&](const AnalysisOptionField& field) { return field.name == option.name; });
+    if (f == fields.end()) throw InvalidArgument("unknown analysis option '" + option.name + "'");
+    f->set(options, option.value);
+  }
+  return options;
+}
+
+std::vector<OptionDifference> analysis_option_differences(const AnalysisOptions& first, const AnalysisOptions& second) {
+  std::vector<OptionDifference> out;
+  for (const AnalysisOptionField& f : analysis_option_fields()) {
+    const OptionValue a = f.get(first), b = f.get(second);
+    if (a != b) out.push_back({f.name, option_text(a), option_text(b)});
+  }
+  return out;
+}
+
+}  // namespace reebkit

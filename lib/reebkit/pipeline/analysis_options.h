@@ -1,0 +1,52 @@
+// The analysis options (AnalysisOptions, pipeline/analyze_mesh.h) by name:
+// one table of the options that change a mesh's Reeb graph, which the
+// command line offers (`--min-persistence` for min_persistence) and the
+// collection file stores (typed attributes of the group
+// `analysis_options`), so that a collection remembers how it was analysed,
+// `reeb query MESH` analyses a mesh file the same way and `reeb index
+// --resume` refuses other options. Adding an analysis option is one row of
+// the table (analysis_options.cpp); an option of a new enum type also needs
+// its to_value / from_value pair there (its name as text, as Geodesic's).
+#pragma once
+
+#include "reebkit/core/option_value.h"
+#include "reebkit/pipeline/analyze_mesh.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace reebkit {
+
+struct AnalysisOptionField {
+  std::string name;  ///< snake_case, as stored; the command-line flag is --name with '-' for '_'
+  std::string help;  ///< one line for --help
+  /// The option's value in `options`: its kind (integer, number, text) is
+  /// the option's for every AnalysisOptions.
+  std::function<OptionValue(const AnalysisOptions& options)> get;
+  /// Sets the option. Throws InvalidArgument naming the option when `value`
+  /// is of another kind or out of the option's type's range, and the
+  /// option's own error for a text it does not know (e.g. parse_geodesic).
+  std::function<void(AnalysisOptions& options, const OptionValue& value)> set;
+};
+
+/// Every analysis option, in the order --help and `reeb info` list them.
+const std::vector<AnalysisOptionField>& analysis_option_fields();
+
+/// `options` by name, in table order.
+std::vector<NamedOption> named_analysis_options(const AnalysisOptions& options);
+
+/// The analysis options `named` gives, the defaults for those it lacks (a
+/// file written before an option existed was analysed with its default).
+/// Throws InvalidArgument naming an unknown option or a value of the wrong kind.
+AnalysisOptions analysis_options_from(const std::vector<NamedOption>& named);
+
+/// An option whose value differs between two sets, as text.
+struct OptionDifference {
+  std::string name, first, second;
+};
+
+/// The options whose values differ between `first` and `second`, in table order.
+std::vector<OptionDifference> analysis_option_differences(const AnalysisOptions& first, const AnalysisOptions& second);
+
+}  // namespace reebkit
