@@ -256,7 +256,7 @@ TEST(CollectionFile, CorruptedFilesFoundByTheFuzzerFailAtOnceNamingTheFile) {
   for (const char* name : {"store/corrupted_metadata.h5", "store/corrupted_superblock.h5"}) {
     const std::filesystem::path path = test::fixture(name);
     ASSERT_TRUE(std::filesystem::is_regular_file(path)) << path;
-    const std::string message = error_message([&] {
+    const std::string message = test::thrown_message<Error>([&] {
       const CollectionReader reader(path);
       (void)reader.entries(0, reader.size());
     });
