@@ -55,8 +55,9 @@ TEST(ReebGraph, LeavesAreTheNodesEndingInATermination) {
 /// build_reeb_graph equals reference_reeb_graph exactly: same nodes (in the
 /// same order, with the same attributes), edges and segmentation; the same
 /// skeleton points up to the rounding of the fast builder's running sums.
-void expect_same_as_reference(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f,
-                              const ReebOptions& options = {}) {
+void expect_same_as_reference_with(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f,
+                                   const ReebOptions& options) {
+  SCOPED_TRACE(std::string("level lines: ") + level_lines_name(options.level_lines));
   const ReebGraph fast = build_reeb_graph(mesh, graph, f, options);
   const ReebGraph reference = reference_reeb_graph(mesh, graph, f, options);
   expect_consistent(fast, mesh, f);
@@ -76,6 +77,15 @@ void expect_same_as_reference(const Mesh& mesh, const MeshGraph& graph, const st
   }
   EXPECT_EQ(fast.edges, reference.edges);
   EXPECT_EQ(fast.vertex_node, reference.vertex_node);
+}
+
+/// The same, for both definitions of a level line.
+void expect_same_as_reference(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f,
+                              ReebOptions options = {}) {
+  for (const LevelLines lines : {LevelLines::Contour, LevelLines::Paper}) {
+    options.level_lines = lines;
+    expect_same_as_reference_with(mesh, graph, f, options);
+  }
 }
 
 void expect_same_as_reference(const ReebInput& in) { expect_same_as_reference(in.mesh, in.graph, in.fq); }
@@ -215,6 +225,44 @@ TEST(BuildReebGraph, EqualsReferenceOnCgalMeshes) {
                            "cylinder.off"}) {
     SCOPED_TRACE(name);
     expect_same_as_reference(reeb_input(load_mesh(dir / name).components[0]));
+  }
+}
+
+// Renumbering the vertices (f carried along, without ties) gives the same
+// contour graph: the same nodes in the same order, the same edges, and the
+// same segmentation up to the renumbering.
+TEST(BuildReebGraph, InvariantToVertexRenumbering) {
+  const std::vector<Mesh> meshes = {make_torus(30, 12), make_holed_plate(3, 2), make_star(StarOptions{6, 3})};
+  unsigned seed = 1;
+  for (const Mesh& mesh : meshes) {
+    for (int run = 0; run < 3; ++run, ++seed) {
+      SCOPED_TRACE("seed " + std::to_string(seed));
+      const std::vector<double> f = random_ranks(mesh.num_vertices(), seed);
+      std::vector<Index> to(static_cast<std::size_t>(mesh.num_vertices()));
+      std::iota(to.begin(), to.end(), Index{0});
+      std::shuffle(to.begin(), to.end(), std::mt19937(seed + 100));
+      Mesh renumbered = mesh;
+      std::vector<double> g(f.size());
+      for (Index v = 0; v < mesh.num_vertices(); ++v) {
+        renumbered.vertices.row(to[static_cast<std::size_t>(v)]) = mesh.vertices.row(v);
+        g[static_cast<std::size_t>(to[static_cast<std::size_t>(v)])] = f[static_cast<std::size_t>(v)];
+      }
+      for (Index t = 0; t < mesh.num_triangles(); ++t)
+        for (int k = 0; k < 3; ++k) renumbered.triangles(t, k) = to[static_cast<std::size_t>(mesh.triangles(t, k))];
+      const ReebGraph a = build_reeb_graph(mesh, build_mesh_graph(mesh), f);
+      const ReebGraph b = build_reeb_graph(renumbered, build_mesh_graph(renumbered), g);
+      ASSERT_EQ(a.num_nodes(), b.num_nodes());
+      EXPECT_EQ(a.edges, b.edges);
+      for (std::size_t n = 0; n < a.nodes.size(); ++n) {
+        EXPECT_EQ(a.nodes[n].type, b.nodes[n].type);
+        EXPECT_EQ(a.nodes[n].end, b.nodes[n].end);
+        EXPECT_EQ(a.nodes[n].vertex_count, b.nodes[n].vertex_count);
+        EXPECT_NEAR(a.nodes[n].area, b.nodes[n].area, 1e-12 * (1 + a.nodes[n].area));
+      }
+      for (Index v = 0; v < mesh.num_vertices(); ++v)
+        EXPECT_EQ(a.vertex_node[static_cast<std::size_t>(v)],
+                  b.vertex_node[static_cast<std::size_t>(to[static_cast<std::size_t>(v)])]);
+    }
   }
 }
 

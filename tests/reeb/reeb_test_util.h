@@ -49,7 +49,9 @@ inline Mesh disjoint_union(const Mesh& a, const Mesh& b) {
 
 /// The skeleton of each node lies in the bounding box of the vertices its
 /// level line goes on to absorb: those of the node and of the nodes after it
-/// (edges run from earlier to later nodes). The root's starts at the global
+/// (edges run from earlier to later nodes), and v_t of the event that ends
+/// it (the birth vertex of the nodes after it), which a contour line holds
+/// even where another line absorbs it. The root's starts at the global
 /// minimum; a leaf's ends at one of its own vertices, where its line vanished.
 inline void expect_skeleton_in_place(const ReebGraph& g, const Mesh& mesh, const std::vector<double>& f) {
   const double tolerance = 1e-9 * (mesh.vertices.colwise().maxCoeff() - mesh.vertices.colwise().minCoeff()).norm();
@@ -57,8 +59,11 @@ inline void expect_skeleton_in_place(const ReebGraph& g, const Mesh& mesh, const
   std::vector<Eigen::AlignedBox3d> box(g.nodes.size(), empty);
   for (Index v = 0; v < mesh.num_vertices(); ++v)
     box[static_cast<std::size_t>(g.vertex_node[static_cast<std::size_t>(v)])].extend(Vec3(mesh.vertices.row(v)));
-  for (auto e = g.edges.rbegin(); e != g.edges.rend(); ++e)
-    box[static_cast<std::size_t>((*e)[0])].extend(box[static_cast<std::size_t>((*e)[1])]);
+  for (auto e = g.edges.rbegin(); e != g.edges.rend(); ++e) {
+    Eigen::AlignedBox3d& before = box[static_cast<std::size_t>((*e)[0])];
+    before.extend(box[static_cast<std::size_t>((*e)[1])]);
+    before.extend(Vec3(mesh.vertices.row(g.nodes[static_cast<std::size_t>((*e)[1])].birth_vertex)));
+  }
   for (std::size_t n = 0; n < g.nodes.size(); ++n) {
     const std::vector<Vec3>& skeleton = g.nodes[n].skeleton;
     ASSERT_FALSE(skeleton.empty()) << "node " << n;

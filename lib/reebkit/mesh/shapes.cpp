@@ -56,6 +56,58 @@ Mesh make_cube() {
   return from_lists(points, tris);
 }
 
+Mesh make_holed_plate(int genus, int resolution) {
+  if (genus < 0 || resolution < 1) throw InvalidArgument("make_holed_plate: genus must be >= 0, resolution >= 1");
+  const int nx = 2 * genus + 1, ny = 3;
+  const auto full = [&](int x, int y, int z) {
+    return x >= 0 && x < nx && y >= 0 && y < ny && z == 0 && !(y == 1 && x % 2 == 1);
+  };
+  // Lattice points at 1/resolution, welded by their integer coordinates.
+  std::vector<Vec3> points;
+  std::unordered_map<std::uint64_t, Index> index;
+  const auto point = [&](const std::array<int, 3>& p) {
+    const std::uint64_t key = (static_cast<std::uint64_t>(p[0]) << 42) | (static_cast<std::uint64_t>(p[1]) << 21) |
+                              static_cast<std::uint64_t>(p[2]);
+    const auto [it, inserted] = index.try_emplace(key, static_cast<Index>(points.size()));
+    if (inserted) points.emplace_back(p[0], p[1], p[2]);
+    return it->second;
+  };
+  std::vector<std::array<Index, 3>> tris;
+  for (int x = 0; x < nx; ++x)
+    for (int y = 0; y < ny; ++y) {
+      if (!full(x, y, 0)) continue;
+      const std::array<int, 3> cell = {x, y, 0};
+      for (int a = 0; a < 3; ++a)
+        for (const int side : {0, 1}) {
+          std::array<int, 3> next = cell;
+          next[static_cast<std::size_t>(a)] += side == 0 ? -1 : 1;
+          if (full(next[0], next[1], next[2])) continue;
+          // The face normal to axis a, spanned by the axes b, c that follow
+          // it; corners counter-clockwise seen from outside.
+          const auto b = static_cast<std::size_t>((a + 1) % 3), c = static_cast<std::size_t>((a + 2) % 3);
+          for (int i = 0; i < resolution; ++i)
+            for (int j = 0; j < resolution; ++j) {
+              std::array<Index, 4> q;
+              const int du[4] = {0, 1, 1, 0}, dv[4] = {0, 0, 1, 1};
+              for (int k = 0; k < 4; ++k) {
+                std::array<int, 3> p = {cell[0] * resolution, cell[1] * resolution, cell[2] * resolution};
+                p[static_cast<std::size_t>(a)] += side * resolution;
+                p[b] += i + du[k];
+                p[c] += j + dv[k];
+                q[static_cast<std::size_t>(k)] = point(p);
+              }
+              if (side == 1)
+                add_quad(tris, q[0], q[1], q[2], q[3]);
+              else
+                add_quad(tris, q[0], q[3], q[2], q[1]);
+            }
+        }
+    }
+  Mesh mesh = from_lists(points, tris);
+  mesh.vertices /= resolution;
+  return mesh;
+}
+
 Mesh make_icosphere(int levels, double radius) {
   if (levels < 0) throw InvalidArgument("make_icosphere: levels must be >= 0");
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;

@@ -26,6 +26,13 @@ Mesh make_icosphere(int levels, double radius = 1.0);
 /// Genus 1.
 Mesh make_torus(int major, int minor, double R = 1.0, double r = 0.35);
 
+/// A closed surface of any genus: the boundary of a plate of (2 genus + 1) x
+/// 3 x 1 unit cubes with `genus` square holes through it (the cubes at
+/// (2i + 1, 1) left out), each cube face split into `resolution` x
+/// `resolution` squares. Manifold, consistently oriented; genus >= 0,
+/// resolution >= 1.
+Mesh make_holed_plate(int genus, int resolution = 4);
+
 /// Options of make_star.
 struct StarOptions {
   int arms = 5;               ///< number of protrusions (>= 1)

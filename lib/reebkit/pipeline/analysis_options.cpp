@@ -11,6 +11,7 @@ namespace {
 
 OptionValue to_value(double x) { return x; }
 OptionValue to_value(Geodesic method) { return std::string(geodesic_name(method)); }
+OptionValue to_value(LevelLines lines) { return std::string(level_lines_name(lines)); }
 template <typename T, typename = std::enable_if_t<std::is_integral_v<T>>>
 OptionValue to_value(T x) {
   return static_cast<std::int64_t>(x);
@@ -19,6 +20,9 @@ OptionValue to_value(T x) {
 void from_value(const OptionValue& value, double& x, const std::string&) { x = std::get<double>(value); }
 void from_value(const OptionValue& value, Geodesic& method, const std::string&) {
   method = parse_geodesic(std::get<std::string>(value));
+}
+void from_value(const OptionValue& value, LevelLines& lines, const std::string&) {
+  lines = parse_level_lines(std::get<std::string>(value));
 }
 template <typename T, typename = std::enable_if_t<std::is_integral_v<T>>>
 void from_value(const OptionValue& value, T& x, const std::string& name) {
@@ -61,6 +65,9 @@ const std::vector<AnalysisOptionField>& analysis_option_fields() {
             &A::features, &FeatureOptions::max_extra_sweeps),
       field("extra_seeds", "further diameter sweeps from farthest-point seeds", &A::features,
             &FeatureOptions::extra_seeds),
+      field("level_lines", "what a level line is: contour (the connected curves of the propagation front, exact "
+            "topology) or paper (Definition 6: connected sets of candidate vertices)", &A::reeb,
+            &ReebOptions::level_lines),
       field("skeleton_levels", "levels of f the skeleton is thinned to (a point per level a line absorbs)",
             &A::reeb, &ReebOptions::skeleton_levels),
   };
@@ -75,6 +82,10 @@ std::vector<NamedOption> named_analysis_options(const AnalysisOptions& options) 
 
 AnalysisOptions analysis_options_from(const std::vector<NamedOption>& named) {
   AnalysisOptions options;
+  // Files written before level_lines existed were analysed with Definition 6.
+  if (!named.empty() && std::none_of(named.begin(), named.end(),
+                                     [](const NamedOption& option) { return option.name == "level_lines"; }))
+    options.reeb.level_lines = LevelLines::Paper;
   for (const NamedOption& option : named) {
     const auto& fields = analysis_option_fields();
     const auto f = std::find_if(fields.begin(), fields.end(),

@@ -37,7 +37,9 @@ const std::vector<AnalysisOptionField>& analysis_option_fields();
 std::vector<NamedOption> named_analysis_options(const AnalysisOptions& options);
 
 /// The analysis options `named` gives, the defaults for those it lacks (a
-/// file written before an option existed was analysed with its default).
+/// file written before an option existed was analysed with its default, but
+/// for level_lines: a non-empty set without it predates the contour lines
+/// and means paper).
 /// Throws InvalidArgument naming an unknown option or a value of the wrong kind.
 AnalysisOptions analysis_options_from(const std::vector<NamedOption>& named);
 

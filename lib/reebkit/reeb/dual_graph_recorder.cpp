@@ -69,10 +69,18 @@ Index DualGraphRecorder::start_root(Index minimum) {
   return root;
 }
 
+void DualGraphRecorder::link(Index from, Index to) {
+  graph_.edges.push_back({from, to});
+  // First link: the old line continues in one line only (a junction, or
+  // one of several old lines feeding a line); a second: it split.
+  NodeType& end = graph_.nodes[static_cast<std::size_t>(from)].end;
+  end = end == NodeType::Termination ? NodeType::Junction : NodeType::Bifurcation;
+}
+
 void DualGraphRecorder::step(Index v, const LineChange& change, std::vector<Index>& new_nodes) {
   new_nodes.clear();
   const Index level = level_of(v);
-  if (change.old_nodes.size() == 1 && change.new_lines == 1) {  // no event
+  if (change.old_nodes.size() == 1 && change.new_lines == 1 && change.cycles <= 0) {  // no event
     const Index node = change.old_nodes[0];
     new_nodes.push_back(node);
     if (level > last_level_[static_cast<std::size_t>(node)])
@@ -86,19 +94,54 @@ void DualGraphRecorder::step(Index v, const LineChange& change, std::vector<Inde
     graph_.nodes[old].end = NodeType::Termination;
     if (line_shown_[old] == 0) sample(change.old_nodes[k], change.old_centers[k], level);
   }
+  // Each link adds an edge and each new line a node: the links close
+  // links - new_lines cycles among nodes that were connected already.
+  const auto linked_cycles = static_cast<Index>(change.links.size()) - change.new_lines;
+  if (change.cycles >= 0 && change.cycles != linked_cycles &&
+      change.cycles >= static_cast<Index>(change.old_nodes.size()) - 1) {
+    unfold(v, level, change, new_nodes);
+    return;
+  }
   parents_.assign(static_cast<std::size_t>(change.new_lines), 0);
   for (const auto& link : change.links) ++parents_[static_cast<std::size_t>(link[1])];
   for (std::size_t k = 0; k < parents_.size(); ++k) {
     new_nodes.push_back(add_node(parents_[k] > 1 ? NodeType::Junction : NodeType::Bifurcation, v));
     sample(new_nodes.back(), change.new_centers[k], level);
   }
-  for (const auto& [old, line] : change.links) {
-    const Index from = change.old_nodes[static_cast<std::size_t>(old)];
-    graph_.edges.push_back({from, new_nodes[static_cast<std::size_t>(line)]});
-    // First link: the old line continues in one line only (a junction, or
-    // one of several old lines feeding a line); a second: it split.
-    NodeType& end = graph_.nodes[static_cast<std::size_t>(from)].end;
-    end = end == NodeType::Termination ? NodeType::Junction : NodeType::Bifurcation;
+  for (const auto& [old, line] : change.links)
+    link(change.old_nodes[static_cast<std::size_t>(old)], new_nodes[static_cast<std::size_t>(line)]);
+}
+
+void DualGraphRecorder::unfold(Index v, Index level, const LineChange& change, std::vector<Index>& new_nodes) {
+  Vec3 center = mesh_.vertices.row(v);
+  if (change.new_lines > 0) {
+    center.setZero();
+    for (const Vec3& c : change.new_centers) center += c;
+    center /= static_cast<double>(change.new_centers.size());
+  }
+  const auto saddle_node = [&](NodeType type) {
+    const Index node = add_node(type, v);
+    sample(node, center, level);
+    return node;
+  };
+  // The old lines merge (closing old_nodes - 1 cycles), ...
+  Index hub = saddle_node(change.old_nodes.size() > 1 ? NodeType::Junction : NodeType::Bifurcation);
+  for (const Index old : change.old_nodes) link(old, hub);
+  // ... every further cycle is a split and a merge, ...
+  for (Index c = static_cast<Index>(change.old_nodes.size()) - 1; c < change.cycles; ++c) {
+    const Index a = saddle_node(NodeType::Bifurcation);
+    const Index b = saddle_node(NodeType::Bifurcation);
+    link(hub, a);
+    link(hub, b);
+    hub = saddle_node(NodeType::Junction);
+    link(a, hub);
+    link(b, hub);
+  }
+  // ... and the last node splits into the new lines.
+  for (Index k = 0; k < change.new_lines; ++k) {
+    new_nodes.push_back(add_node(NodeType::Bifurcation, v));
+    sample(new_nodes.back(), change.new_centers[static_cast<std::size_t>(k)], level);
+    link(hub, new_nodes.back());
   }
 }
 

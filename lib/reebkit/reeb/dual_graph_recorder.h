@@ -50,6 +50,12 @@ struct LineChange {
   /// the step, in the order of old_nodes, and of each new line after it.
   std::vector<Vec3> old_centers;
   std::vector<Vec3> new_centers;
+  /// The independent cycles the step closes when known, else -1. A
+  /// degenerate saddle (v_t's visited neighbours in m > 2 arcs around it) is
+  /// m - 1 simple saddles at once, each a split or a merge, and only the
+  /// count of merges tells how many cycles it closes: an old line that
+  /// splits and merges again at v_t continues as one line but closes a cycle.
+  Index cycles = -1;
 
   void clear() {
     old_nodes.clear();
@@ -57,6 +63,7 @@ struct LineChange {
     links.clear();
     old_centers.clear();
     new_centers.clear();
+    cycles = -1;
   }
 };
 
@@ -74,13 +81,19 @@ class DualGraphRecorder {
   void absorb(Index v, Index node) { graph_.vertex_node[static_cast<std::size_t>(v)] = node; }
 
   /// Applies the change of step v_t and returns the node of each new line in
-  /// `new_nodes`. One old line becoming one new line is no event: the line
-  /// keeps its node. No new line is a termination (eq. 11). Otherwise every
-  /// old node ends and every new line starts a node linked from its old ones:
-  /// a bifurcation (eq. 9) when one old line feeds it, a junction (eq. 10)
-  /// when several do. Skeletons: an ending node gets its line's last
-  /// position, a new node starts at its line's, and a line that is no event
-  /// adds a point when f(v) enters a new level (ReebOptions::skeleton_levels).
+  /// `new_nodes`. One old line becoming one new line and closing no cycle is
+  /// no event: the line keeps its node. No new line is a termination (eq.
+  /// 11). Otherwise every old node ends and every new line starts a node
+  /// linked from its old ones: a bifurcation (eq. 9) when one old line feeds
+  /// it, a junction (eq. 10) when several do. When those links would close
+  /// another number of cycles than change.cycles (a degenerate saddle), the
+  /// step is unfolded instead: the old nodes join in one node at v_t without
+  /// vertices, then each cycle is one split into two such nodes and their
+  /// merge, and the last feeds every new line. Skeletons: an ending node gets
+  /// its line's last position, a new node starts at its line's, a node of an
+  /// unfolded saddle is the mean of the new lines' positions, and a line that
+  /// is no event adds a point when f(v) enters a new level
+  /// (ReebOptions::skeleton_levels).
   void step(Index v, const LineChange& change, std::vector<Index>& new_nodes);
 
   /// The finished graph: node attributes from the segmentation, edges sorted.
@@ -89,6 +102,10 @@ class DualGraphRecorder {
 
  private:
   Index add_node(NodeType type, Index birth_vertex);
+  /// Adds the edge from `from` to `to` and updates how `from` ends.
+  void link(Index from, Index to);
+  /// The nodes of a degenerate saddle at v (see step), ending in `new_nodes`.
+  void unfold(Index v, Index level, const LineChange& change, std::vector<Index>& new_nodes);
   /// The level of f(v) among ReebOptions::skeleton_levels equal parts of the range of f.
   Index level_of(Index v) const;
   /// Appends a skeleton point to `node`: its line as it is now.

@@ -2,7 +2,9 @@
 
 #include "reebkit/core/error.h"
 #include "reebkit/features/critical_points.h"
+#include "reebkit/reeb/contour_lines.h"
 #include "reebkit/reeb/dual_graph_recorder.h"
+#include "reebkit/reeb/line_split.h"
 
 #include <algorithm>
 #include <numeric>
@@ -17,6 +19,20 @@ const char* node_type_name(NodeType type) {
     case NodeType::Termination: return "termination";
   }
   return "unknown";
+}
+
+const char* level_lines_name(LevelLines lines) {
+  switch (lines) {
+    case LevelLines::Contour: return "contour";
+    case LevelLines::Paper: return "paper";
+  }
+  throw InvalidArgument("level_lines_name: unknown definition " + std::to_string(static_cast<int>(lines)));
+}
+
+LevelLines parse_level_lines(const std::string& name) {
+  for (const LevelLines lines : {LevelLines::Contour, LevelLines::Paper})
+    if (name == level_lines_name(lines)) return lines;
+  throw InvalidArgument("unknown level lines '" + name + "' (expected contour or paper)");
 }
 
 Index ReebGraph::connected_components() const {
@@ -212,11 +228,8 @@ class IncrementalLevelLines {
 
   /// Splits `line`, which v just left, into its connected components. Each
   /// component holds a neighbour of v, and neighbours consecutive around v
-  /// (sharing a triangle with it) stay connected, so there is one search per
-  /// arc of candidate neighbours around v. The searches advance in turns, one
-  /// vertex each, searches that meet join one group, and they stop once at
-  /// most one group is still growing: every finished group is a whole
-  /// component and becomes a new line, the growing one keeps `line`.
+  /// (sharing a triangle with it) stay connected: one search per arc of
+  /// candidate neighbours around v (line_split.h).
   void split_at(Index v, Index line) {
     seeds_.clear();
     const Index begin = graph_.offset[at(v)];
@@ -231,73 +244,20 @@ class IncrementalLevelLines {
       if (p == i || !candidate(p) || graph_.link_next[at(p)] == 0) seeds_.push_back(graph_.neighbor[at(i)]);
     }
     if (any && seeds_.empty()) seeds_.push_back(graph_.neighbor[at(begin)]);  // the whole ring is one arc
-    const auto k = seeds_.size();
-    if (k < 2) return;
-
-    const Index base = next_search_;
-    next_search_ += static_cast<Index>(k);
-    if (queues_.size() < k) queues_.resize(k);
-    heads_.assign(k, 0);
-    group_.resize(k);
-    for (std::size_t s = 0; s < k; ++s) {
-      queues_[s].assign(1, seeds_[s]);
-      vertex_[at(seeds_[s])].search = base + static_cast<Index>(s);
-      group_[s] = s;
-    }
-    const auto find = [this](std::size_t s) {
-      while (group_[s] != s) s = group_[s] = group_[group_[s]];
-      return s;
-    };
-    growing_.assign(k, 0);
-    for (;;) {
-      for (std::size_t s = 0; s < k; ++s) {
-        if (heads_[s] == queues_[s].size()) continue;
-        const Index u = queues_[s][heads_[s]++];
-        for (Index i = graph_.offset[at(u)]; i < graph_.offset[at(u) + 1]; ++i) {
-          const Index w = graph_.neighbor[at(i)];
-          if (vertex_[at(w)].state != VertexState::Candidate) continue;
-          const Index mark = vertex_[at(w)].search;
-          if (mark < base) {
-            vertex_[at(w)].search = base + static_cast<Index>(s);
-            queues_[s].push_back(w);
-          } else {
-            group_[find(static_cast<std::size_t>(mark - base))] = find(s);
+    const auto& pieces = splitter_.split(
+        seeds_, [this](Index u) -> Index& { return vertex_[at(u)].search; },
+        [this](Index u, auto&& visit) {
+          for (Index i = graph_.offset[at(u)]; i < graph_.offset[at(u) + 1]; ++i) {
+            const Index w = graph_.neighbor[at(i)];
+            if (vertex_[at(w)].state == VertexState::Candidate) visit(w);
           }
-        }
+        });
+    for (const std::vector<Index>& piece : pieces) {
+      const Index moved = new_line(node_[at(line)]);
+      for (const Index u : piece) {
+        unlink(line, u);
+        link(moved, u);
       }
-      std::fill(growing_.begin(), growing_.end(), 0);
-      std::size_t groups_growing = 0;
-      for (std::size_t s = 0; s < k; ++s) {
-        if (heads_[s] == queues_[s].size()) continue;
-        std::uint8_t& g = growing_[find(s)];
-        groups_growing += g == 0;
-        g = 1;
-      }
-      if (groups_growing > 1) continue;
-      // The line keeps the growing group, or when all finished, the largest.
-      std::size_t keep = k;
-      std::vector<std::size_t>& sizes = group_size_;
-      sizes.assign(k, 0);
-      for (std::size_t s = 0; s < k; ++s) {
-        const std::size_t r = find(s);
-        sizes[r] += queues_[s].size();
-        if (growing_[r] != 0) keep = r;
-      }
-      if (keep == k)
-        for (std::size_t s = 0; s < k; ++s)
-          if (find(s) == s && (keep == k || sizes[s] > sizes[keep])) keep = s;
-      for (std::size_t r = 0; r < k; ++r) {
-        if (find(r) != r || r == keep) continue;
-        const Index piece = new_line(node_[at(line)]);
-        for (std::size_t s = 0; s < k; ++s) {
-          if (find(s) != r) continue;
-          for (const Index u : queues_[s]) {
-            unlink(line, u);
-            link(piece, u);
-          }
-        }
-      }
-      return;
     }
   }
 
@@ -331,21 +291,21 @@ class IncrementalLevelLines {
   std::vector<Index> merged_from_;
   std::vector<Index> new_lines_;
   std::vector<Index> seeds_;
-  std::vector<std::vector<Index>> queues_;
-  std::vector<std::size_t> heads_;
-  std::vector<std::size_t> group_;
-  std::vector<std::uint8_t> growing_;
-  std::vector<std::size_t> group_size_;
-  Index next_search_ = 0;
+  LineSplitter splitter_;
 };
 
 }  // namespace
 
-ReebGraph build_reeb_graph(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f,
-                           const ReebOptions& options) {
-  check_reeb_inputs("build_reeb_graph", mesh, graph, f, options);
+namespace {
+
+/// Propagates with `Lines` (IncrementalLevelLines or ContourLevelLines) from
+/// the global minimum, then from the next unvisited minimum of each further
+/// component when options.all_components allows.
+template <typename Lines>
+ReebGraph propagate(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f,
+                    const ReebOptions& options) {
   DualGraphRecorder recorder(mesh, f, options);
-  IncrementalLevelLines lines(mesh, graph, f, recorder);
+  Lines lines(mesh, graph, f, recorder);
   lines.propagate_from(global_minimum(f));
   if (lines.visited_count() < mesh.num_vertices()) {
     if (!options.all_components)
@@ -358,6 +318,15 @@ ReebGraph build_reeb_graph(const Mesh& mesh, const MeshGraph& graph, const std::
       if (!lines.visited(v)) lines.propagate_from(v);
   }
   return recorder.finish();
+}
+
+}  // namespace
+
+ReebGraph build_reeb_graph(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f,
+                           const ReebOptions& options) {
+  check_reeb_inputs("build_reeb_graph", mesh, graph, f, options);
+  return options.level_lines == LevelLines::Paper ? propagate<IncrementalLevelLines>(mesh, graph, f, options)
+                                                  : propagate<ContourLevelLines>(mesh, graph, f, options);
 }
 
 }  // namespace reebkit

@@ -1,11 +1,18 @@
 // The high level Reeb graph by discrete level-line propagation (Tierny et al.
 // 2006, section 4.2, Definitions 6-9): f is propagated from its global
-// minimum, vertex by vertex in (f, vertex id) order; the discrete level lines
-// are the connected components of the candidate set C(t) (the unvisited
-// vertices next to visited ones), and the graph records how they split
-// (bifurcation), merge (junction) and vanish (termination). The graph is the
-// paper's *dual* Reeb graph: a node per connected region swept between two
-// events, an edge where a region hands over to the next.
+// minimum, vertex by vertex in (f, vertex id) order, and the graph records how
+// the level lines of the propagation front split (bifurcation), merge
+// (junction) and vanish (termination). The graph is the paper's *dual* Reeb
+// graph: a node per connected region swept between two events, an edge where
+// a region hands over to the next.
+//
+// Two definitions of a level line (LevelLines): by default the connected
+// curves of the front, the level set of the piecewise-linear function
+// between the visited and the unvisited vertices, joined through the
+// triangles it crosses (contour_lines.h), which gives a closed surface of
+// genus g exactly g independent cycles; or Definition 6 as the paper states
+// it, the connected sets of candidate vertices, where two curves that pass
+// within one edge of each other are one line.
 #pragma once
 
 #include "reebkit/core/mesh.h"
@@ -13,6 +20,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace reebkit {
@@ -84,11 +92,31 @@ struct ReebGraph {
   /// a later merge of level lines.
   Index independent_cycles() const;
   /// Leaves: the nodes whose region ends in a termination (eq. 11), one per
-  /// feature point reached by its own level line.
+  /// local maximum of f reached by its own level line.
   Index leaf_count() const;
 };
 
+/// What a discrete level line is.
+enum class LevelLines : std::uint8_t {
+  /// A connected curve of the propagation front: the front crosses every
+  /// edge between a visited and an unvisited vertex, and two crossings are
+  /// on one curve when a triangle joins them (the level set of the
+  /// piecewise-linear function that is 0 on visited, 1 on unvisited vertices).
+  /// A candidate vertex touched by two curves belongs to both.
+  Contour,
+  /// Definition 6: a connected set of candidate vertices C(t).
+  Paper
+};
+
+/// "contour" or "paper".
+const char* level_lines_name(LevelLines lines);
+/// Inverse of level_lines_name; throws InvalidArgument naming the accepted values.
+LevelLines parse_level_lines(const std::string& name);
+
 struct ReebOptions {
+  /// The level lines whose evolution the graph records (default: the
+  /// contours of the front, exact topology; Paper: Definition 6).
+  LevelLines level_lines = LevelLines::Contour;
   /// false (default): the graph must be connected, as f_q needs; a
   /// propagation that leaves vertices unreached throws InvalidArgument.
   /// true: one root per connected component, each started at the
@@ -104,11 +132,11 @@ struct ReebOptions {
 
 /// The dual Reeb graph of f by discrete level-line propagation from the
 /// global minimum of f, vertices compared by (value, vertex id). The level
-/// lines are kept up to date incrementally: lines meeting at v_t's new
-/// candidate neighbours are merged by relabelling the smaller one, and a line
-/// can only split where v_t left it, which breadth-first searches started
-/// from the arcs of v_t's one-ring settle in time proportional to all but
-/// the largest piece. O(n log n) in practice. Gives exactly the graph of
+/// lines (options.level_lines) are kept up to date incrementally: lines
+/// meeting at v_t are merged by relabelling the smaller one, and a line can
+/// only split where v_t left it, which breadth-first searches started from
+/// the arcs around v_t settle in time proportional to all but the largest
+/// piece. O(n log n) in practice. Gives exactly the graph of
 /// reference_reeb_graph (reeb_reference.h).
 /// \pre mesh, graph and f describe the same non-empty vertex set and f is
 ///      finite; throws InvalidArgument otherwise.
