@@ -38,20 +38,20 @@ struct PinnedGraph {
 // eight 2, elk 1, the others 0 = their genus). Update here, and only here,
 // when the graph or the attributes change on purpose.
 constexpr PinnedGraph kPinned[] = {
-    {"anchor.off", 14, 2, 4, 0xe0e55caccf5f34e9ull},
+    {"anchor.off", 15, 2, 4, 0x192d8525beb0aee3ull},
     {"bunny.off", 5, 3, 0, 0x5aa58175d490a625ull},
     {"cactus.off", 5, 3, 0, 0x690280ccb71acb8bull},
     {"cow.off", 19, 10, 0, 0xc963866feaf04e8eull},
-    {"eight.off", 9, 2, 2, 0x40dd2be3f63df76cull},
-    {"elk.off", 10, 4, 1, 0x11144fe1f21706f2ull},
+    {"eight.off", 9, 2, 2, 0xe800192727be2c4cull},
+    {"elk.off", 10, 4, 1, 0x1a68841c32b36327ull},
     {"hand.off", 3, 2, 0, 0x5d1a006597754243ull},
-    {"helmet.off", 12, 2, 3, 0xdef2fc3b864204e6ull},
+    {"helmet.off", 12, 2, 3, 0x64274b38dff2fdd6ull},
 };
 
 // Retrieval on the variants collection (48 meshes, 8 classes of 6), as the
-// demo measures it: NN 1.000, FT 0.983.
+// demo measures it: NN 1.000, FT 0.979 (0.983 with LevelLines::Paper).
 constexpr double kNearestNeighborFloor = 1.0;
-constexpr double kFirstTierFloor = 0.98;
+constexpr double kFirstTierFloor = 0.979;
 
 /// FNV-1a over `value` rounded to 30 significant bits (mantissa and exponent).
 void hash_rounded(std::uint64_t& hash, double value) {

@@ -20,6 +20,7 @@ AnalysisOptions changed() {
   o.features.start_vertex = 7;
   o.features.max_extra_sweeps = 3;
   o.features.extra_seeds = 0;
+  o.reeb.level_lines = LevelLines::Paper;
   o.reeb.skeleton_levels = 50;
   return o;
 }
@@ -48,8 +49,12 @@ TEST(AnalysisOptions, NamedOptionsRoundTrip) {
   EXPECT_EQ(back.features.start_vertex, 7);
   EXPECT_EQ(back.reeb.skeleton_levels, 50);
   EXPECT_EQ(back.holes.max_loop_length, 0.5);
-  // Options a file lacks keep their defaults.
-  const AnalysisOptions partial = analysis_options_from({{"epsilon", 0.2}});
+  EXPECT_EQ(back.reeb.level_lines, LevelLines::Paper);
+  // Options a file lacks keep their defaults, but for level_lines: a file
+  // that predates it was analysed with Definition 6.
+  EXPECT_EQ(analysis_options_from({{"epsilon", 0.2}}).reeb.level_lines, LevelLines::Paper);
+  EXPECT_EQ(analysis_options_from({}).reeb.level_lines, LevelLines::Contour);
+  const AnalysisOptions partial = analysis_options_from({{"epsilon", 0.2}, {"level_lines", std::string("contour")}});
   EXPECT_EQ(partial.features.epsilon, 0.2);
   const auto differences = analysis_option_differences(partial, AnalysisOptions{});
   ASSERT_EQ(differences.size(), 1u);

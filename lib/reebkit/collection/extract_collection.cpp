@@ -198,6 +198,7 @@ std::string analysis_options_json(const AnalysisOptions& options) {
       .end_object();
   json.key("reeb")
       .begin_object()
+      .field("level_lines", level_lines_name(options.reeb.level_lines))
       .field("all_components", options.reeb.all_components)
       .field("skeleton_levels", static_cast<long long>(options.reeb.skeleton_levels))
       .end_object();

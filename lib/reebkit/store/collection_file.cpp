@@ -157,13 +157,24 @@ void write_option_attribute(H5::Group& group, const NamedOption& option) {
     write_string_attribute(group, option.name.c_str(), std::get<std::string>(option.value));
 }
 
-/// Every attribute of the group `name` as a named option (none when the group is absent).
+/// Every attribute of the group `name` as a named option (none when the
+/// group is absent), in the order they were written when the group tracks
+/// it, else by name.
 std::vector<NamedOption> read_option_attributes(const H5::H5File& file, const char* name) {
   std::vector<NamedOption> out;
   if (!file.nameExists(name)) return out;
   const H5::Group group = file.openGroup(name);
+  unsigned tracked = 0;
+  const hid_t plist = H5Gget_create_plist(group.getId());
+  H5Pget_attr_creation_order(plist, &tracked);
+  H5Pclose(plist);
+  const H5_index_t order = (tracked & H5P_CRT_ORDER_INDEXED) != 0 ? H5_INDEX_CRT_ORDER : H5_INDEX_NAME;
   for (int i = 0; i < group.getNumAttrs(); ++i) {
-    const H5::Attribute attribute = group.openAttribute(static_cast<unsigned>(i));
+    const hid_t id = H5Aopen_by_idx(group.getId(), ".", order, H5_ITER_INC, static_cast<hsize_t>(i), H5P_DEFAULT,
+                                    H5P_DEFAULT);
+    if (id < 0) throw H5::AttributeIException("read_option_attributes", "cannot open attribute " + std::to_string(i));
+    const H5::Attribute attribute(id);
+    H5Aclose(id);  // the Attribute holds its own reference
     NamedOption option{attribute.getName(), {}};
     switch (attribute.getTypeClass()) {
       case H5T_INTEGER: {
@@ -662,7 +673,15 @@ void CollectionWriter::Impl::create(const fs::path& target, const Provenance& pr
   write_string_attribute(file, "options", provenance.options);
   write_string_attribute(file, "command", provenance.command);
   write_string_attribute(file, "created", provenance.created.empty() ? utc_now() : provenance.created);
-  H5::Group analysis = file.createGroup("analysis_options");
+  // The options read back in the order they were written (creation order
+  // tracked: past eight attributes HDF5 would list them by name hash).
+  const hid_t ordered = H5Pcreate(H5P_GROUP_CREATE);
+  H5Pset_attr_creation_order(ordered, H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED);
+  const hid_t group_id = H5Gcreate2(file.getId(), "analysis_options", H5P_DEFAULT, ordered, H5P_DEFAULT);
+  H5Pclose(ordered);
+  if (group_id < 0) throw H5::GroupIException("CollectionWriter", "cannot create the group analysis_options");
+  H5::Group analysis(group_id);  // holds its own reference
+  H5Gclose(group_id);
   for (const NamedOption& option : provenance.analysis_options) write_option_attribute(analysis, option);
   if (!provenance.classes.empty()) write_classes(file, provenance.classes, provenance.classes_file);
 
