@@ -1,7 +1,7 @@
 // The whole per-mesh pipeline (mesh graph + feature points + f_q + Reeb
 // graph; file parsing excluded): time, growth with mesh size, peak memory.
 //
-//   build/bench/pipeline_bench [--geodesic dijkstra|fmm]
+//   build/bench/pipeline_bench [--geodesic dijkstra|fmm] [--level-lines contour|paper]
 //
 // Prints, for generated tori of 10k to 1M vertices (2 faces per vertex) and
 // six-armed stars, the median of 3 runs (and the steps of that run) of analyze_mesh, the fitted growth
@@ -70,7 +70,7 @@ struct Measurement {
   std::size_t nodes = 0;
 };
 
-AnalysisOptions g_options;  // --geodesic sets the method of the feature points and f_q
+AnalysisOptions g_options;  // --geodesic and --level-lines set the analysis
 
 Measurement measure(const std::string& name, const Mesh& mesh) {
   Measurement m;
@@ -111,13 +111,24 @@ void header() {
 
 int main(int argc, char** argv) {
   try {
-    if (argc == 3 && std::string(argv[1]) == "--geodesic") g_options.features.geodesic = parse_geodesic(argv[2]);
-    else if (argc != 1) throw std::invalid_argument("unexpected arguments");
+    for (int i = 1; i < argc; i += 2) {
+      const std::string flag = argv[i];
+      if (i + 1 == argc) throw std::invalid_argument(flag + " needs a value");
+      if (flag == "--geodesic")
+        g_options.features.geodesic = parse_geodesic(argv[i + 1]);
+      else if (flag == "--level-lines")
+        g_options.reeb.level_lines = parse_level_lines(argv[i + 1]);
+      else
+        throw std::invalid_argument("unexpected argument " + flag);
+    }
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "pipeline_bench: %s\nusage: pipeline_bench [--geodesic dijkstra|fmm]\n", e.what());
+    std::fprintf(stderr,
+                 "pipeline_bench: %s\nusage: pipeline_bench [--geodesic dijkstra|fmm] [--level-lines contour|paper]\n",
+                 e.what());
     return 2;
   }
-  std::printf("geodesic distances: %s\n", geodesic_name(g_options.features.geodesic));
+  std::printf("geodesic distances: %s, level lines: %s\n", geodesic_name(g_options.features.geodesic),
+              level_lines_name(g_options.reeb.level_lines));
   header();
   // Tori with a 4:1 grid: 10k, 31.6k, 100k, 316k, 1M vertices.
   std::vector<Measurement> tori;

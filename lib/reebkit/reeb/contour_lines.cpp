@@ -29,7 +29,7 @@ void FrontStar::collect(const Mesh& mesh, const MeshGraph& graph, const VertexTr
   v_ = v;
   entries_.clear();
   const auto visited = [&state](Index u) { return state[static_cast<std::size_t>(u)] == VertexState::Visited; };
-  Index lower_triangles = 0;
+  Index lower_triangles = 0, lower_corners = 0;
   for (Index i = around.offset[static_cast<std::size_t>(v)]; i < around.offset[static_cast<std::size_t>(v) + 1]; ++i) {
     Entry e;
     e.triangle = around.triangle[static_cast<std::size_t>(i)];
@@ -39,25 +39,28 @@ void FrontStar::collect(const Mesh& mesh, const MeshGraph& graph, const VertexTr
       others_visited += u != v && visited(u);
     }
     e.before = others_visited > 0;
+    e.after = others_visited < 2;  // visiting v changes no other corner
     lower_triangles += others_visited == 2;
+    lower_corners += others_visited;
     entries_.push_back(e);
   }
-  Index lower_edges = 0;
-  for (Index i = graph.offset[static_cast<std::size_t>(v)]; i < graph.offset[static_cast<std::size_t>(v) + 1]; ++i)
-    lower_edges += visited(graph.neighbor[static_cast<std::size_t>(i)]);
+  // On a closed ring every neighbour is a corner of two triangles around v.
   closed_ring_ = graph.ring[static_cast<std::size_t>(v)] == RingKind::Closed;
-  euler_drop_ = lower_edges - lower_triangles - 1;
-}
-
-void FrontStar::after(const Mesh& mesh, const std::vector<VertexState>& state) {
-  for (Entry& e : entries_) {
-    e.after = false;
-    for (int k = 0; k < 3; ++k)
-      e.after |= state[static_cast<std::size_t>(mesh.triangles(e.triangle, k))] != VertexState::Visited;
-  }
+  euler_drop_ = lower_corners / 2 - lower_triangles - 1;
 }
 
 const std::vector<Index>& FrontStar::arc_triangles(const Mesh& mesh, const std::vector<VertexState>& state) {
+  arcs_.clear();
+  // A closed ring whose visited neighbours form one arc (m - 1 = 0) has one
+  // arc of unvisited ones, or none.
+  if (closed_ring_ && euler_drop_ <= 0) {
+    for (const Entry& e : entries_)
+      if (e.after) {
+        arcs_.push_back(e.triangle);
+        break;
+      }
+    return arcs_;
+  }
   // Union-find over the entries: two front triangles around v that share an
   // unvisited corner share the edge from v to it.
   const auto n = entries_.size();
@@ -83,20 +86,9 @@ const std::vector<Index>& FrontStar::arc_triangles(const Mesh& mesh, const std::
         if (entries_[j].after && unvisited_corner(j, w)) arc_parent_[static_cast<std::size_t>(find(static_cast<Index>(j)))] = find(static_cast<Index>(i));
     }
   }
-  arcs_.clear();
   for (std::size_t i = 0; i < n; ++i)
     if (entries_[i].after && find(static_cast<Index>(i)) == static_cast<Index>(i)) arcs_.push_back(entries_[i].triangle);
   return arcs_;
-}
-
-Index FrontStar::index_of(const std::vector<Index>& lines, Index line) {
-  const auto it = std::find(lines.begin(), lines.end(), line);
-  return it == lines.end() ? kInvalidIndex : static_cast<Index>(it - lines.begin());
-}
-
-void FrontStar::add_link(LineChange& change, Index old_index, Index new_index) {
-  const std::array<Index, 2> link = {old_index, new_index};
-  if (std::find(change.links.begin(), change.links.end(), link) == change.links.end()) change.links.push_back(link);
 }
 
 Index FrontStar::entries_before() const {
@@ -196,31 +188,15 @@ Index ContourLevelLines::merge(Index a, Index b) {
   return a;
 }
 
-void ContourLevelLines::absorb(Index v) {
-  star_.collect(mesh_, graph_, around_, state_, v);
-  for (FrontStar::Entry& e : star_.entries())
-    if (e.before) e.old_line = triangle_[at(e.triangle)].line;
-  change_.clear();
-  star_.settle_old(
-      root_line_, change_, [this](Index line) { return node_[at(line)]; },
-      [this, v](Index line) { return weight_[at(line)] > 0 ? center(line) : Vec3(mesh_.vertices.row(v)); });
-  recorder_.absorb(v, change_.old_nodes[0]);
-
-  // v leaves the front: its triangles' lines lose it as an unvisited corner.
+void ContourLevelLines::visit(Index v, Index line) {
+  // v leaves the front: its triangles on it lose v as an unvisited corner.
   for (const FrontStar::Entry& e : star_.entries()) {
     if (!e.before) continue;
-    sum_[at(e.old_line)] -= position(v);
-    --weight_[at(e.old_line)];
+    sum_[at(line)] -= position(v);
+    --weight_[at(line)];
   }
   state_[at(v)] = VertexState::Visited;
   ++visited_count_;
-  // Every line through v becomes one, ...
-  const std::vector<Index>& old_lines = star_.old_lines();
-  Index line = old_lines[0];
-  for (std::size_t k = 1; k < old_lines.size(); ++k) line = merge(line, old_lines[k]);
-  root_line_ = kInvalidIndex;
-  // ... which holds v's triangles still or newly on the front ...
-  star_.after(mesh_, state_);
   for (const FrontStar::Entry& e : star_.entries()) {
     if (e.before && !e.after) unlink(line, e.triangle);
     if (!e.before && e.after) link(line, e.triangle);
@@ -231,10 +207,36 @@ void ContourLevelLines::absorb(Index v) {
     state_[at(w)] = VertexState::Candidate;
     queue_.emplace(f_[at(w)], w);
   }
+}
+
+void ContourLevelLines::absorb(Index v) {
+  star_.collect(mesh_, graph_, around_, state_, v);
+  for (FrontStar::Entry& e : star_.entries())
+    if (e.before) e.old_line = triangle_[at(e.triangle)].line;
+  if (star_.regular()) {  // one line through v, the same after: no event
+    const auto& entries = star_.entries();
+    const Index line = std::find_if(entries.begin(), entries.end(), [](const FrontStar::Entry& e) { return e.before; })->old_line;
+    recorder_.absorb(v, node_[at(line)]);
+    visit(v, line);
+    recorder_.continue_line(v, node_[at(line)], [this, line] { return center(line); });
+    return;
+  }
+  change_.clear();
+  star_.settle_old(
+      root_line_, change_, [this](Index line) { return node_[at(line)]; },
+      [this, v](Index line) { return weight_[at(line)] > 0 ? center(line) : Vec3(mesh_.vertices.row(v)); });
+  recorder_.absorb(v, change_.old_nodes[0]);
+  // Every line through v becomes one, ...
+  const std::vector<Index>& old_lines = star_.old_lines();
+  Index line = old_lines[0];
+  for (std::size_t k = 1; k < old_lines.size(); ++k) line = merge(line, old_lines[k]);
+  root_line_ = kInvalidIndex;
+  // ... which holds v's triangles still or newly on the front ...
+  visit(v, line);
   // ... and splits into its connected curves, one per arc around v at most.
   const auto& pieces = splitter_.split(
       star_.arc_triangles(mesh_, state_), [this](Index t) -> Index& { return triangle_[at(t)].search; },
-      [this](Index t, auto&& visit) { for_each_front_neighbour(mesh_, around_, state_, t, visit); });
+      [this](Index t, auto&& visit_triangle) { for_each_front_neighbour(mesh_, around_, state_, t, visit_triangle); });
   for (const std::vector<Index>& piece : pieces) {
     const Index moved = new_line(node_[at(line)]);
     for (const Index t : piece) {

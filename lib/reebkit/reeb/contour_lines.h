@@ -18,6 +18,8 @@
 #include "reebkit/reeb/dual_graph_recorder.h"
 #include "reebkit/reeb/line_split.h"
 
+#include <algorithm>
+#include <array>
 #include <vector>
 
 namespace reebkit {
@@ -54,8 +56,8 @@ void for_each_front_neighbour(const Mesh& mesh, const VertexTriangles& around, c
 /// One propagation step seen from the triangles around v_t: which of them
 /// are on the front before and after v_t is visited, and in which lines.
 /// A builder calls, in order: collect (v_t still unvisited), sets old_line of
-/// the entries on the front, settle_old; visits v_t and updates its lines;
-/// then after, sets new_line of the entries on the front, settle_new.
+/// the entries on the front before, settle_old; visits v_t and updates its
+/// lines; then sets new_line of the entries on the front after, settle_new.
 class FrontStar {
  public:
   struct Entry {
@@ -66,12 +68,18 @@ class FrontStar {
     Index new_line = kInvalidIndex;
   };
 
-  /// The triangles around v (unvisited yet), and the Euler characteristic of
-  /// the part of v's star that visiting v adds to the visited region.
+  /// The triangles around v (unvisited yet), whether each is on the front
+  /// before and after v is visited, and the Euler characteristic of the part
+  /// of v's star that visiting v adds to the visited region.
   void collect(const Mesh& mesh, const MeshGraph& graph, const VertexTriangles& around,
                const std::vector<VertexState>& state, Index v);
 
   std::vector<Entry>& entries() { return entries_; }
+
+  /// True when the step is no event whatever the lines: v's ring is closed
+  /// and its visited neighbours form one arc (so one line enters v's
+  /// triangles and one leaves them, the same).
+  bool regular() const { return closed_ring_ && euler_drop_ == 0; }
 
   /// The old lines: those of the entries on the front, in entry order, or
   /// `root_line` alone when there are none (v is where a propagation starts).
@@ -88,9 +96,6 @@ class FrontStar {
     }
   }
   const std::vector<Index>& old_lines() const { return old_lines_; }
-
-  /// Marks the entries on the front now that v is visited.
-  void after(const Mesh& mesh, const std::vector<VertexState>& state);
 
   /// One entry per arc of front triangles around v (after): triangles that
   /// share an edge from v to an unvisited vertex are on one arc.
@@ -109,15 +114,13 @@ class FrontStar {
     change.new_lines = static_cast<Index>(new_lines_.size());
     for (const Index line : new_lines_) change.new_centers.push_back(center_of(line));
     const bool start = entries_before() == 0;
-    for (Index n = 0; n < change.new_lines; ++n) {
-      bool fed = false;
-      for (const Entry& e : entries_) {
-        if (!e.before || !e.after || e.new_line != new_lines_[static_cast<std::size_t>(n)]) continue;
-        add_link(change, index_of(old_lines_, e.old_line), n);
-        fed = true;
-      }
-      if (!fed) add_link(change, 0, n);
-    }
+    for (const Entry& e : entries_)
+      if (e.before && e.after) add_link(change, index_of(old_lines_, e.old_line), index_of(new_lines_, e.new_line));
+    // A new line no old line feeds (a fan of v that was off the front) is fed
+    // by the first old line.
+    for (Index n = 0; n < change.new_lines; ++n)
+      if (std::none_of(change.links.begin(), change.links.end(), [n](const std::array<Index, 2>& l) { return l[1] == n; }))
+        add_link(change, 0, n);
     // Visiting v changes the Euler characteristic of the visited region by
     // 1 - (edges) + (triangles) of the star part it adds, the number of
     // front curves by new - old; on an orientable surface every simple
@@ -131,8 +134,15 @@ class FrontStar {
   const std::vector<Index>& new_lines() const { return new_lines_; }
 
  private:
-  static Index index_of(const std::vector<Index>& lines, Index line);
-  static void add_link(LineChange& change, Index old_index, Index new_index);
+  static Index index_of(const std::vector<Index>& lines, Index line) {
+    for (std::size_t i = 0; i < lines.size(); ++i)
+      if (lines[i] == line) return static_cast<Index>(i);
+    return kInvalidIndex;
+  }
+  static void add_link(LineChange& change, Index old_index, Index new_index) {
+    const std::array<Index, 2> link = {old_index, new_index};
+    if (std::find(change.links.begin(), change.links.end(), link) == change.links.end()) change.links.push_back(link);
+  }
   Index entries_before() const;
 
   Index v_ = kInvalidIndex;
@@ -173,6 +183,9 @@ class ContourLevelLines {
   void unlink(Index line, Index t);
   Index merge(Index a, Index b);
   void absorb(Index v);
+  /// Visits v: its triangles leave the front or join it in `line` (every old
+  /// line through v merged), its unvisited neighbours are queued.
+  void visit(Index v, Index line);
 
   const Mesh& mesh_;
   const MeshGraph& graph_;

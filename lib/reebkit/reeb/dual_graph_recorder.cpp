@@ -81,12 +81,8 @@ void DualGraphRecorder::step(Index v, const LineChange& change, std::vector<Inde
   new_nodes.clear();
   const Index level = level_of(v);
   if (change.old_nodes.size() == 1 && change.new_lines == 1 && change.cycles <= 0) {  // no event
-    const Index node = change.old_nodes[0];
-    new_nodes.push_back(node);
-    if (level > last_level_[static_cast<std::size_t>(node)])
-      sample(node, change.new_centers[0], level);
-    else
-      line_shown_[static_cast<std::size_t>(node)] = 0;
+    new_nodes.push_back(change.old_nodes[0]);
+    continue_line(v, change.old_nodes[0], [&change] { return change.new_centers[0]; });
     return;
   }
   for (std::size_t k = 0; k < change.old_nodes.size(); ++k) {

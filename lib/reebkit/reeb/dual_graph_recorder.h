@@ -96,6 +96,20 @@ class DualGraphRecorder {
   /// (ReebOptions::skeleton_levels).
   void step(Index v, const LineChange& change, std::vector<Index>& new_nodes);
 
+  /// Step v_t that is no event for the line of `node` (one old line becoming
+  /// one new line, closing no cycle): the line keeps its node, and its
+  /// skeleton gets center() (the line after the step) when f(v) enters a
+  /// new level; center is called only then.
+  template <typename Center>
+  void continue_line(Index v, Index node, Center&& center) {
+    const Index level = level_of(v);
+    const auto n = static_cast<std::size_t>(node);
+    if (level > last_level_[n])
+      sample(node, center(), level);
+    else
+      line_shown_[n] = 0;
+  }
+
   /// The finished graph: node attributes from the segmentation, edges sorted.
   /// \pre every vertex has been absorbed.
   ReebGraph finish();

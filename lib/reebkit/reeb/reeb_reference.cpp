@@ -126,7 +126,6 @@ ReebGraph contour_reference(const Mesh& mesh, const MeshGraph& graph, const std:
       state[static_cast<std::size_t>(w)] = VertexState::Candidate;
       queue.emplace(f[static_cast<std::size_t>(w)], w);
     }
-    star.after(mesh, state);
     const std::vector<Index> next = front_curves(mesh, around, state);
     for (FrontStar::Entry& e : star.entries())
       if (e.after) e.new_line = next[static_cast<std::size_t>(e.triangle)];
