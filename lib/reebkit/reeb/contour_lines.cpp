@@ -102,13 +102,12 @@ ContourLevelLines::ContourLevelLines(const Mesh& mesh, const MeshGraph& graph, c
       f_(f),
       recorder_(recorder),
       around_(vertex_triangles(mesh)),
-      origin_(0.5 * (mesh.vertices.colwise().minCoeff() + mesh.vertices.colwise().maxCoeff()).transpose()),
       state_(f.size(), VertexState::Unvisited),
-      triangle_(static_cast<std::size_t>(mesh.num_triangles())) {}
+      lines_(mesh, mesh.num_triangles()) {}
 
 void ContourLevelLines::propagate_from(Index minimum) {
   // The propagation starts with one line, the root's, holding no triangle.
-  root_line_ = new_line(recorder_.start_root(minimum));
+  root_line_ = lines_.new_line(recorder_.start_root(minimum));
   state_[at(minimum)] = VertexState::Candidate;
   queue_.emplace(f_[at(minimum)], minimum);
   while (!queue_.empty()) {
@@ -118,88 +117,31 @@ void ContourLevelLines::propagate_from(Index minimum) {
   }
 }
 
-Index ContourLevelLines::new_line(Index node) {
-  Index line;
-  if (free_lines_.empty()) {
-    line = static_cast<Index>(head_.size());
-    head_.push_back(kInvalidIndex);
-    size_.push_back(0);
-    sum_.push_back(Vec3::Zero());
-    weight_.push_back(0);
-    node_.push_back(node);
-  } else {
-    line = free_lines_.back();
-    free_lines_.pop_back();
-    sum_[at(line)].setZero();  // drop the rounding left by its previous triangles
-    weight_[at(line)] = 0;
-    node_[at(line)] = node;
-  }
-  return line;
-}
-
-void ContourLevelLines::link(Index line, Index t) {
-  Triangle& r = triangle_[at(t)];
-  r.line = line;
-  r.prev = kInvalidIndex;
-  r.next = head_[at(line)];
-  if (head_[at(line)] != kInvalidIndex) triangle_[at(head_[at(line)])].prev = t;
-  head_[at(line)] = t;
-  ++size_[at(line)];
+void ContourLevelLines::attach(Index line, Index t) {
+  lines_.link(line, t);
   for (int k = 0; k < 3; ++k) {
     const Index u = mesh_.triangles(t, k);
-    if (state_[at(u)] == VertexState::Visited) continue;
-    sum_[at(line)] += position(u);
-    ++weight_[at(line)];
+    if (state_[at(u)] != VertexState::Visited) lines_.add_point(line, u, +1);
   }
 }
 
-void ContourLevelLines::unlink(Index line, Index t) {
-  Triangle& r = triangle_[at(t)];
-  (r.prev == kInvalidIndex ? head_[at(line)] : triangle_[at(r.prev)].next) = r.next;
-  if (r.next != kInvalidIndex) triangle_[at(r.next)].prev = r.prev;
-  r.line = kInvalidIndex;
-  --size_[at(line)];
+void ContourLevelLines::detach(Index t) {
   for (int k = 0; k < 3; ++k) {
     const Index u = mesh_.triangles(t, k);
-    if (state_[at(u)] == VertexState::Visited) continue;
-    sum_[at(line)] -= position(u);
-    --weight_[at(line)];
+    if (state_[at(u)] != VertexState::Visited) lines_.add_point(lines_.line_of(t), u, -1);
   }
-}
-
-Index ContourLevelLines::merge(Index a, Index b) {
-  if (size_[at(a)] < size_[at(b)]) std::swap(a, b);
-  if (size_[at(b)] > 0) {
-    Index tail = kInvalidIndex;
-    for (Index t = head_[at(b)]; t != kInvalidIndex; t = triangle_[at(t)].next) {
-      triangle_[at(t)].line = a;
-      tail = t;
-    }
-    triangle_[at(tail)].next = head_[at(a)];
-    if (head_[at(a)] != kInvalidIndex) triangle_[at(head_[at(a)])].prev = tail;
-    head_[at(a)] = head_[at(b)];
-  }
-  size_[at(a)] += size_[at(b)];
-  sum_[at(a)] += sum_[at(b)];
-  weight_[at(a)] += weight_[at(b)];
-  head_[at(b)] = kInvalidIndex;
-  size_[at(b)] = 0;
-  free_lines_.push_back(b);
-  return a;
+  lines_.unlink(t);
 }
 
 void ContourLevelLines::visit(Index v, Index line) {
   // v leaves the front: its triangles on it lose v as an unvisited corner.
-  for (const FrontStar::Entry& e : star_.entries()) {
-    if (!e.before) continue;
-    sum_[at(line)] -= position(v);
-    --weight_[at(line)];
-  }
+  for (const FrontStar::Entry& e : star_.entries())
+    if (e.before) lines_.add_point(line, v, -1);
   state_[at(v)] = VertexState::Visited;
   ++visited_count_;
   for (const FrontStar::Entry& e : star_.entries()) {
-    if (e.before && !e.after) unlink(line, e.triangle);
-    if (!e.before && e.after) link(line, e.triangle);
+    if (e.before && !e.after) detach(e.triangle);
+    if (!e.before && e.after) attach(line, e.triangle);
   }
   for (Index i = graph_.offset[at(v)]; i < graph_.offset[at(v) + 1]; ++i) {
     const Index w = graph_.neighbor[at(i)];
@@ -212,48 +154,50 @@ void ContourLevelLines::visit(Index v, Index line) {
 void ContourLevelLines::absorb(Index v) {
   star_.collect(mesh_, graph_, around_, state_, v);
   for (FrontStar::Entry& e : star_.entries())
-    if (e.before) e.old_line = triangle_[at(e.triangle)].line;
+    if (e.before) e.old_line = lines_.line_of(e.triangle);
   if (star_.regular()) {  // one line through v, the same after: no event
     const auto& entries = star_.entries();
-    const Index line = std::find_if(entries.begin(), entries.end(), [](const FrontStar::Entry& e) { return e.before; })->old_line;
-    recorder_.absorb(v, node_[at(line)]);
+    const Index line =
+        std::find_if(entries.begin(), entries.end(), [](const FrontStar::Entry& e) { return e.before; })->old_line;
+    recorder_.absorb(v, lines_.node(line));
     visit(v, line);
-    recorder_.continue_line(v, node_[at(line)], [this, line] { return center(line); });
+    recorder_.continue_line(v, lines_.node(line), [this, line] { return lines_.center(line); });
     return;
   }
   change_.clear();
   star_.settle_old(
-      root_line_, change_, [this](Index line) { return node_[at(line)]; },
-      [this, v](Index line) { return weight_[at(line)] > 0 ? center(line) : Vec3(mesh_.vertices.row(v)); });
+      root_line_, change_, [this](Index line) { return lines_.node(line); },
+      [this, v](Index line) { return lines_.points(line) > 0 ? lines_.center(line) : Vec3(mesh_.vertices.row(v)); });
   recorder_.absorb(v, change_.old_nodes[0]);
   // Every line through v becomes one, ...
   const std::vector<Index>& old_lines = star_.old_lines();
   Index line = old_lines[0];
-  for (std::size_t k = 1; k < old_lines.size(); ++k) line = merge(line, old_lines[k]);
+  for (std::size_t k = 1; k < old_lines.size(); ++k) line = lines_.merge(line, old_lines[k]);
   root_line_ = kInvalidIndex;
   // ... which holds v's triangles still or newly on the front ...
   visit(v, line);
   // ... and splits into its connected curves, one per arc around v at most.
   const auto& pieces = splitter_.split(
-      star_.arc_triangles(mesh_, state_), [this](Index t) -> Index& { return triangle_[at(t)].search; },
+      star_.arc_triangles(mesh_, state_), [this](Index t) -> Index& { return lines_.search(t); },
       [this](Index t, auto&& visit_triangle) { for_each_front_neighbour(mesh_, around_, state_, t, visit_triangle); });
   for (const std::vector<Index>& piece : pieces) {
-    const Index moved = new_line(node_[at(line)]);
+    const Index moved = lines_.new_line(lines_.node(line));
     for (const Index t : piece) {
-      unlink(line, t);
-      link(moved, t);
+      detach(t);
+      attach(moved, t);
     }
   }
 
   for (FrontStar::Entry& e : star_.entries())
-    if (e.after) e.new_line = triangle_[at(e.triangle)].line;
-  star_.settle_new(change_, [this](Index l) { return center(l); });
+    if (e.after) e.new_line = lines_.line_of(e.triangle);
+  star_.settle_new(change_, [this](Index l) { return lines_.center(l); });
   recorder_.step(v, change_, new_nodes_);
   const std::vector<Index>& new_lines = star_.new_lines();
-  for (std::size_t k = 0; k < new_lines.size(); ++k) node_[at(new_lines[k])] = new_nodes_[k];
+  for (std::size_t k = 0; k < new_lines.size(); ++k) lines_.set_node(new_lines[k], new_nodes_[k]);
   if (new_lines.empty()) {  // termination: the line vanished with v
-    if (size_[at(line)] != 0) throw std::logic_error("ContourLevelLines: a level line outlived its last front triangle");
-    free_lines_.push_back(line);
+    if (lines_.size(line) != 0)
+      throw std::logic_error("ContourLevelLines: a level line outlived its last front triangle");
+    lines_.free_line(line);
   }
 }
 

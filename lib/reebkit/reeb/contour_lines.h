@@ -16,6 +16,7 @@
 #include "reebkit/core/mesh.h"
 #include "reebkit/mesh/mesh_graph.h"
 #include "reebkit/reeb/dual_graph_recorder.h"
+#include "reebkit/reeb/level_line_lists.h"
 #include "reebkit/reeb/line_split.h"
 
 #include <algorithm>
@@ -156,13 +157,10 @@ class FrontStar {
 };
 
 /// The level lines of LevelLines::Contour, kept up to date as the
-/// propagation absorbs one vertex after the other. A line is a doubly-linked
-/// list of its front triangles threaded through one flat array of
-/// per-triangle records, which also hold the triangle's line id; line ids
-/// are recycled. Each line keeps the sum of the positions of its triangles'
-/// unvisited corners (relative to the center of the mesh's bounding box) for
-/// its skeleton point: a candidate vertex counts once per front triangle of
-/// the line it is a corner of.
+/// propagation absorbs one vertex after the other: a line is a list of front
+/// triangles (level_line_lists.h), its points the unvisited corners of its
+/// triangles (a candidate vertex counts once per front triangle of the line
+/// it is a corner of).
 class ContourLevelLines {
  public:
   ContourLevelLines(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f,
@@ -176,12 +174,9 @@ class ContourLevelLines {
 
  private:
   static std::size_t at(Index i) { return static_cast<std::size_t>(i); }
-  Index new_line(Index node);
-  Vec3 position(Index v) const { return mesh_.vertices.row(v).transpose() - origin_; }
-  Vec3 center(Index line) const { return origin_ + sum_[at(line)] / static_cast<double>(weight_[at(line)]); }
-  void link(Index line, Index t);
-  void unlink(Index line, Index t);
-  Index merge(Index a, Index b);
+  /// Front triangle t joins `line`, or leaves its line, with its unvisited corners.
+  void attach(Index line, Index t);
+  void detach(Index t);
   void absorb(Index v);
   /// Visits v: its triangles leave the front or join it in `line` (every old
   /// line through v merged), its unvisited neighbours are queued.
@@ -192,26 +187,11 @@ class ContourLevelLines {
   const std::vector<double>& f_;
   DualGraphRecorder& recorder_;
   VertexTriangles around_;
-  Vec3 origin_;
   CandidateQueue queue_;
   std::vector<VertexState> state_;  // Candidate: queued
   Index visited_count_ = 0;
   Index root_line_ = kInvalidIndex;
-  // Per triangle, together as they are used together.
-  struct Triangle {
-    Index line = kInvalidIndex;  // of a front triangle
-    Index next = kInvalidIndex;  // the line's triangle list
-    Index prev = kInvalidIndex;
-    Index search = -1;  // id of the last split search that reached the triangle
-  };
-  std::vector<Triangle> triangle_;
-  // Per line id.
-  std::vector<Index> head_;
-  std::vector<Index> size_;
-  std::vector<Vec3> sum_;      // of position() over the unvisited corners of its triangles
-  std::vector<Index> weight_;  // the number of those corners
-  std::vector<Index> node_;
-  std::vector<Index> free_lines_;
+  LevelLineLists lines_;  // over the triangles
   // Buffers of one step.
   FrontStar star_;
   LineChange change_;

@@ -4,6 +4,7 @@
 #include "reebkit/features/critical_points.h"
 #include "reebkit/reeb/contour_lines.h"
 #include "reebkit/reeb/dual_graph_recorder.h"
+#include "reebkit/reeb/level_line_lists.h"
 #include "reebkit/reeb/line_split.h"
 
 #include <algorithm>
@@ -63,27 +64,23 @@ Index ReebGraph::leaf_count() const {
 
 namespace {
 
-/// The level lines of C(t), kept up to date as the propagation absorbs one
-/// vertex after the other. A line is a doubly-linked list of its vertices
-/// threaded through one flat array of per-vertex records, which also hold the
-/// vertex's line id; line ids are recycled. Each line also keeps the sum of
-/// its vertices' positions (relative to the center of the mesh's bounding
-/// box, to keep the sums small) for its skeleton point.
+/// The level lines of C(t) (LevelLines::Paper), kept up to date as the
+/// propagation absorbs one vertex after the other: a line is a list of
+/// candidate vertices (level_line_lists.h), its points its vertices.
 class IncrementalLevelLines {
  public:
   IncrementalLevelLines(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f,
                         DualGraphRecorder& recorder)
-      : mesh_(mesh),
-        graph_(graph),
+      : graph_(graph),
         f_(f),
         recorder_(recorder),
-        origin_(0.5 * (mesh.vertices.colwise().minCoeff() + mesh.vertices.colwise().maxCoeff()).transpose()),
-        vertex_(f.size()) {}
+        state_(f.size(), VertexState::Unvisited),
+        lines_(mesh, static_cast<Index>(f.size())) {}
 
   /// Propagates from `minimum` over its whole connected component.
   void propagate_from(Index minimum) {
     // C starts as the minimum alone: one line, the root's.
-    enter(minimum, new_line(recorder_.start_root(minimum)));
+    enter(minimum, lines_.new_line(recorder_.start_root(minimum)));
     while (!queue_.empty()) {
       const Index v = queue_.top().second;
       queue_.pop();
@@ -91,90 +88,47 @@ class IncrementalLevelLines {
     }
   }
 
-  bool visited(Index v) const { return vertex_[at(v)].state == VertexState::Visited; }
+  bool visited(Index v) const { return state_[at(v)] == VertexState::Visited; }
   Index visited_count() const { return visited_count_; }
 
  private:
   static std::size_t at(Index i) { return static_cast<std::size_t>(i); }
 
-  Index new_line(Index node) {
-    Index line;
-    if (free_lines_.empty()) {
-      line = static_cast<Index>(head_.size());
-      head_.push_back(kInvalidIndex);
-      size_.push_back(0);
-      sum_.push_back(Vec3::Zero());
-      node_.push_back(node);
-      slot_.push_back(kInvalidIndex);
-    } else {
-      line = free_lines_.back();
-      free_lines_.pop_back();
-      sum_[at(line)].setZero();  // drop the rounding left by its previous vertices
-      node_[at(line)] = node;
-    }
-    return line;
+  bool candidate(Index v) const { return state_[at(v)] == VertexState::Candidate; }
+
+  /// Candidate v joins `line`, or leaves its line.
+  void attach(Index line, Index v) {
+    lines_.link(line, v);
+    lines_.add_point(line, v, +1);
   }
-
-  Vec3 position(Index v) const { return mesh_.vertices.row(v).transpose() - origin_; }
-
-  /// The barycenter of the line's vertices.
-  Vec3 center(Index line) const { return origin_ + sum_[at(line)] / size_[at(line)]; }
-
-  void link(Index line, Index v) {
-    vertex_[at(v)].line = line;
-    vertex_[at(v)].prev = kInvalidIndex;
-    vertex_[at(v)].next = head_[at(line)];
-    if (head_[at(line)] != kInvalidIndex) vertex_[at(head_[at(line)])].prev = v;
-    head_[at(line)] = v;
-    ++size_[at(line)];
-    sum_[at(line)] += position(v);
-  }
-
-  void unlink(Index line, Index v) {
-    const Index p = vertex_[at(v)].prev;
-    const Index n = vertex_[at(v)].next;
-    (p == kInvalidIndex ? head_[at(line)] : vertex_[at(p)].next) = n;
-    if (n != kInvalidIndex) vertex_[at(n)].prev = p;
-    --size_[at(line)];
-    sum_[at(line)] -= position(v);
+  void detach(Index v) {
+    lines_.add_point(lines_.line_of(v), v, -1);
+    lines_.unlink(v);
   }
 
   /// v joins C(t) in `line`.
   void enter(Index v, Index line) {
-    vertex_[at(v)].state = VertexState::Candidate;
-    link(line, v);
+    state_[at(v)] = VertexState::Candidate;
+    attach(line, v);
     queue_.emplace(f_[at(v)], v);
   }
 
-  /// Merges lines a and b by relabelling the smaller; returns the survivor.
-  Index merge(Index a, Index b) {
-    if (size_[at(a)] < size_[at(b)]) std::swap(a, b);
-    Index tail = kInvalidIndex;
-    for (Index u = head_[at(b)]; u != kInvalidIndex; u = vertex_[at(u)].next) {
-      vertex_[at(u)].line = a;
-      tail = u;
-    }
-    vertex_[at(tail)].next = head_[at(a)];
-    vertex_[at(head_[at(a)])].prev = tail;
-    head_[at(a)] = head_[at(b)];
-    size_[at(a)] += size_[at(b)];
-    sum_[at(a)] += sum_[at(b)];
-    head_[at(b)] = kInvalidIndex;
-    size_[at(b)] = 0;
-    free_lines_.push_back(b);
-    return a;
+  /// The index of `line` among the new lines of the step (slot_ grows with the line ids).
+  Index& slot(Index line) {
+    if (slot_.size() <= at(line)) slot_.resize(at(line) + 1, kInvalidIndex);
+    return slot_[at(line)];
   }
 
   /// Step t: v_t leaves C, its unvisited neighbours enter it.
   void absorb(Index v) {
-    Index line = vertex_[at(v)].line;
-    const Index node = node_[at(line)];
+    Index line = lines_.line_of(v);
+    const Index node = lines_.node(line);
     recorder_.absorb(v, node);
     change_.clear();
     change_.old_nodes.push_back(node);
-    change_.old_centers.push_back(center(line));
-    unlink(line, v);
-    vertex_[at(v)].state = VertexState::Visited;
+    change_.old_centers.push_back(lines_.center(line));
+    detach(v);
+    state_[at(v)] = VertexState::Visited;
     ++visited_count_;
     merged_from_.clear();
 
@@ -185,19 +139,19 @@ class IncrementalLevelLines {
     const Index end = graph_.offset[at(v) + 1];
     for (Index i = begin; i < end; ++i) {
       const Index w = graph_.neighbor[at(i)];
-      if (vertex_[at(w)].state != VertexState::Unvisited) continue;
+      if (state_[at(w)] != VertexState::Unvisited) continue;
       enter(w, line);
       entered_.push_back(w);
     }
     for (const Index w : entered_) {
       for (Index i = graph_.offset[at(w)]; i < graph_.offset[at(w) + 1]; ++i) {
         const Index u = graph_.neighbor[at(i)];
-        if (vertex_[at(u)].state != VertexState::Candidate || vertex_[at(u)].line == line) continue;
-        change_.old_nodes.push_back(node_[at(vertex_[at(u)].line)]);
-        change_.old_centers.push_back(center(vertex_[at(u)].line));
+        if (!candidate(u) || lines_.line_of(u) == line) continue;
+        change_.old_nodes.push_back(lines_.node(lines_.line_of(u)));
+        change_.old_centers.push_back(lines_.center(lines_.line_of(u)));
         merged_from_.push_back(u);
-        line = merge(line, vertex_[at(u)].line);
-        node_[at(line)] = node;
+        line = lines_.merge(line, lines_.line_of(u));
+        lines_.set_node(line, node);
       }
     }
 
@@ -207,23 +161,23 @@ class IncrementalLevelLines {
     new_lines_.clear();
     for (Index i = begin; i < end; ++i) {
       const Index w = graph_.neighbor[at(i)];
-      if (vertex_[at(w)].state != VertexState::Candidate) continue;
-      const Index l = vertex_[at(w)].line;
-      if (slot_[at(l)] != kInvalidIndex) continue;
-      slot_[at(l)] = static_cast<Index>(new_lines_.size());
-      change_.links.push_back({0, slot_[at(l)]});
-      change_.new_centers.push_back(center(l));
+      if (!candidate(w)) continue;
+      const Index l = lines_.line_of(w);
+      if (slot(l) != kInvalidIndex) continue;
+      slot(l) = static_cast<Index>(new_lines_.size());
+      change_.links.push_back({0, slot(l)});
+      change_.new_centers.push_back(lines_.center(l));
       new_lines_.push_back(l);
     }
     change_.new_lines = static_cast<Index>(new_lines_.size());
     for (std::size_t k = 0; k < merged_from_.size(); ++k)
-      change_.links.push_back({static_cast<Index>(k + 1), slot_[at(vertex_[at(merged_from_[k])].line)]});
+      change_.links.push_back({static_cast<Index>(k + 1), slot(lines_.line_of(merged_from_[k]))});
     recorder_.step(v, change_, new_nodes_);
     for (std::size_t k = 0; k < new_lines_.size(); ++k) {
-      node_[at(new_lines_[k])] = new_nodes_[k];
-      slot_[at(new_lines_[k])] = kInvalidIndex;
+      lines_.set_node(new_lines_[k], new_nodes_[k]);
+      slot(new_lines_[k]) = kInvalidIndex;
     }
-    if (new_lines_.empty()) free_lines_.push_back(line);  // termination: the line is empty
+    if (new_lines_.empty()) lines_.free_line(line);  // termination: the line is empty
   }
 
   /// Splits `line`, which v just left, into its connected components. Each
@@ -234,56 +188,41 @@ class IncrementalLevelLines {
     seeds_.clear();
     const Index begin = graph_.offset[at(v)];
     const Index end = graph_.offset[at(v) + 1];
-    const auto candidate = [&](Index i) { return vertex_[at(graph_.neighbor[at(i)])].state == VertexState::Candidate; };
+    const auto candidate_at = [&](Index i) { return candidate(graph_.neighbor[at(i)]); };
     bool any = false;
     for (Index i = begin; i < end; ++i) {
-      if (!candidate(i)) continue;
+      if (!candidate_at(i)) continue;
       any = true;
       // The slot before i around v; link_next[end - 1] is set for closed rings only.
       const Index p = i > begin ? i - 1 : end - 1;
-      if (p == i || !candidate(p) || graph_.link_next[at(p)] == 0) seeds_.push_back(graph_.neighbor[at(i)]);
+      if (p == i || !candidate_at(p) || graph_.link_next[at(p)] == 0) seeds_.push_back(graph_.neighbor[at(i)]);
     }
     if (any && seeds_.empty()) seeds_.push_back(graph_.neighbor[at(begin)]);  // the whole ring is one arc
     const auto& pieces = splitter_.split(
-        seeds_, [this](Index u) -> Index& { return vertex_[at(u)].search; },
+        seeds_, [this](Index u) -> Index& { return lines_.search(u); },
         [this](Index u, auto&& visit) {
           for (Index i = graph_.offset[at(u)]; i < graph_.offset[at(u) + 1]; ++i) {
             const Index w = graph_.neighbor[at(i)];
-            if (vertex_[at(w)].state == VertexState::Candidate) visit(w);
+            if (candidate(w)) visit(w);
           }
         });
     for (const std::vector<Index>& piece : pieces) {
-      const Index moved = new_line(node_[at(line)]);
+      const Index moved = lines_.new_line(lines_.node(line));
       for (const Index u : piece) {
-        unlink(line, u);
-        link(moved, u);
+        detach(u);
+        attach(moved, u);
       }
     }
   }
 
-  const Mesh& mesh_;
   const MeshGraph& graph_;
   const std::vector<double>& f_;
   DualGraphRecorder& recorder_;
-  Vec3 origin_;
   CandidateQueue queue_;
+  std::vector<VertexState> state_;
   Index visited_count_ = 0;
-  // Per vertex, together as they are used together.
-  struct Vertex {
-    VertexState state = VertexState::Unvisited;
-    Index line = kInvalidIndex;  // of a candidate
-    Index next = kInvalidIndex;  // the line's vertex list
-    Index prev = kInvalidIndex;
-    Index search = -1;  // id of the last split search that reached the vertex
-  };
-  std::vector<Vertex> vertex_;
-  // Per line id.
-  std::vector<Index> head_;
-  std::vector<Index> size_;
-  std::vector<Vec3> sum_;  // of position()
-  std::vector<Index> node_;
-  std::vector<Index> slot_;  // index among the new lines of the current step, else kInvalidIndex
-  std::vector<Index> free_lines_;
+  LevelLineLists lines_;
+  std::vector<Index> slot_;  // per line id: index among the new lines of the current step, else kInvalidIndex
   // Buffers of one step.
   LineChange change_;
   std::vector<Index> new_nodes_;
