@@ -90,22 +90,6 @@ void expect_same_as_reference(const Mesh& mesh, const MeshGraph& graph, const st
 
 void expect_same_as_reference(const ReebInput& in) { expect_same_as_reference(in.mesh, in.graph, in.fq); }
 
-/// f = a random ranking of the vertices: level lines split and merge at
-/// almost every step, often both at once.
-std::vector<double> random_ranks(Index n, unsigned seed) {
-  std::vector<double> f(static_cast<std::size_t>(n));
-  std::iota(f.begin(), f.end(), 0.0);
-  std::shuffle(f.begin(), f.end(), std::mt19937(seed));
-  return f;
-}
-
-/// f = a coordinate: the height function of the classic Reeb graph pictures.
-std::vector<double> height(const Mesh& mesh, int axis) {
-  std::vector<double> f(static_cast<std::size_t>(mesh.num_vertices()));
-  for (Index v = 0; v < mesh.num_vertices(); ++v) f[static_cast<std::size_t>(v)] = mesh.vertices(v, axis);
-  return f;
-}
-
 TEST(BuildReebGraph, EqualsReferenceOnStars) {
   for (const int arms : {2, 3, 4, 5, 6, 7, 8}) {
     for (const int levels : {3, 4}) {

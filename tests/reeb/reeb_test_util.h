@@ -11,6 +11,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <numeric>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -112,6 +114,22 @@ inline void expect_consistent(const ReebGraph& g, const Mesh& mesh, const std::v
   EXPECT_EQ(g.leaf_count(), std::count(hands_over.begin(), hands_over.end(), 0));
   EXPECT_EQ(g.connected_components(), 1);
   expect_skeleton_in_place(g, mesh, f);
+}
+
+/// f = a random ranking of the vertices: level lines split and merge at
+/// almost every step, often several times at one vertex.
+inline std::vector<double> random_ranks(Index n, unsigned seed) {
+  std::vector<double> f(static_cast<std::size_t>(n));
+  std::iota(f.begin(), f.end(), 0.0);
+  std::shuffle(f.begin(), f.end(), std::mt19937(seed));
+  return f;
+}
+
+/// f = a coordinate: the height function of the classic Reeb graph pictures.
+inline std::vector<double> height(const Mesh& mesh, int axis) {
+  std::vector<double> f(static_cast<std::size_t>(mesh.num_vertices()));
+  for (Index v = 0; v < mesh.num_vertices(); ++v) f[static_cast<std::size_t>(v)] = mesh.vertices(v, axis);
+  return f;
 }
 
 /// "N nodes, E edges, C cycles, L leaves" for failure messages.
