@@ -120,6 +120,47 @@ TEST(ReebGenusOracle, RandomFunctionsUnfoldDegenerateSaddles) {
   EXPECT_GT(paper_wrong, 0) << "Definition 6 got every random function right: the test lost its point";
 }
 
+// A monkey saddle made by hand: on an icosphere, a vertex c of degree 6
+// whose neighbours alternate low and high, everything else lower still
+// (a height function towards c). The
+// propagation reaches c once the rest and the three low neighbours are
+// visited: its visited neighbours form m = 3 arcs, the one line around the
+// unvisited c and its three high neighbours splits into three, one around
+// each, and each vanishes at its vertex: the root, a bifurcation into three
+// nodes of one vertex each, three leaves, no cycle.
+TEST(ReebGenusOracle, MonkeySaddleSplitsOneLineIntoThree) {
+  const Mesh mesh = make_icosphere(1);
+  const MeshGraph graph = build_mesh_graph(mesh);
+  Index c = 0;
+  while (graph.degree(c) != 6) ++c;
+  ASSERT_EQ(graph.ring[static_cast<std::size_t>(c)], RingKind::Closed);
+  std::vector<double> f(static_cast<std::size_t>(mesh.num_vertices()));
+  // Below 0.05 elsewhere: the height towards c, whose only maximum is c.
+  for (Index v = 0; v < mesh.num_vertices(); ++v)
+    f[static_cast<std::size_t>(v)] = 0.025 * (1.0 + mesh.vertices.row(v).dot(mesh.vertices.row(c)));
+  f[static_cast<std::size_t>(c)] = 0.5;
+  std::vector<Index> high;
+  for (int k = 0; k < 6; ++k) {
+    const Index n = graph.neighbor[static_cast<std::size_t>(graph.offset[static_cast<std::size_t>(c)] + k)];
+    f[static_cast<std::size_t>(n)] = k % 2 == 0 ? 0.1 + 0.1 * k : 0.7 + 0.1 * k;
+    if (k % 2 == 1) high.push_back(n);
+  }
+  for (const LevelLines lines : {LevelLines::Contour, LevelLines::Paper}) {
+    SCOPED_TRACE(level_lines_name(lines));
+    const ReebGraph g = build_reeb_graph(mesh, graph, f, with_lines(lines));
+    expect_consistent(g, mesh, f);
+    ASSERT_EQ(g.num_nodes(), 4) << summary(g);
+    EXPECT_EQ(g.nodes[0].end, NodeType::Bifurcation);
+    EXPECT_EQ(g.vertex_node[static_cast<std::size_t>(c)], 0);
+    EXPECT_EQ(g.edges, (std::vector<std::array<Index, 2>>{{0, 1}, {0, 2}, {0, 3}}));
+    for (const Index n : high) {
+      const ReebNode& leaf = g.nodes[static_cast<std::size_t>(g.vertex_node[static_cast<std::size_t>(n)])];
+      EXPECT_EQ(leaf.end, NodeType::Termination);
+      EXPECT_EQ(leaf.vertex_count, 1);
+    }
+  }
+}
+
 // Two cubes sharing one corner c (a non-manifold vertex whose ring is two
 // fans). f rises along x (less a little of y and z), so c = (1, 1, 1) is
 // reached while cube a still has unvisited vertices at x = 1: the one curve of the front in cube a goes on,
