@@ -19,6 +19,11 @@ struct Similarity {
 /// for a given seed.
 Eigen::Matrix3d random_rotation(std::uint64_t seed);
 
+/// A random similarity for `mesh`: a uniform rotation (random_rotation), a
+/// scale 2^u and a translation (u_x, u_y, u_z) x the bounding box diagonal,
+/// each u uniform in [-1, 1]; repeatable for a given seed.
+Similarity random_similarity(const Mesh& mesh, std::uint64_t seed);
+
 /// A copy of `mesh` with every vertex transformed; connectivity unchanged.
 Mesh transformed(const Mesh& mesh, const Similarity& transform);
 
