@@ -71,13 +71,12 @@ int run_variants(const std::vector<std::string>& args) {
 
     std::vector<std::pair<std::string, Mesh>> variants;
     variants.emplace_back("", mesh);
-    variants.emplace_back("_rotated", transformed(mesh, random_similarity(mesh, rng())));
+    variants.emplace_back("_rotated", transformed(mesh, random_similarity(mesh, rng)));
     variants.emplace_back("_resampled", resample_mesh(mesh, ResamplingOptions{0.2, rng()}));
     for (int turned = 1; turned <= 2; ++turned) {
       PoseOptions pose_options;
       pose_options.leaves = turned;
-      pose_options.seed = rng();
-      RandomPose pose = random_pose(analysis, pose_options);
+      RandomPose pose = random_pose(analysis, pose_options, rng);
       for (const std::string& why : pose.skipped) std::cerr << "warning: " << meshes[i].name << ": " << why << "\n";
       if (pose.turns.empty()) {
         std::cerr << "warning: " << meshes[i].name << ": no leaf to turn, no _posed" << turned << " copy\n";

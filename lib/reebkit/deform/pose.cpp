@@ -3,7 +3,6 @@
 #include "reebkit/core/error.h"
 
 #include <algorithm>
-#include <random>
 
 namespace reebkit {
 
@@ -23,10 +22,14 @@ std::vector<Index> leaves_by_area(const ReebGraph& graph) {
 }
 
 RandomPose random_pose(const MeshAnalysis& analysis, const PoseOptions& options) {
+  std::mt19937_64 rng(options.seed);
+  return random_pose(analysis, options, rng);
+}
+
+RandomPose random_pose(const MeshAnalysis& analysis, const PoseOptions& options, std::mt19937_64& rng) {
   if (options.leaves < 0) throw InvalidArgument(analysis.mesh.source + ": negative number of leaves to turn");
   if (!(0.0 <= options.min_degrees && options.min_degrees <= options.max_degrees && options.max_degrees <= 180.0))
     throw InvalidArgument(analysis.mesh.source + ": pose angles must satisfy 0 <= min <= max <= 180 degrees");
-  std::mt19937_64 rng(options.seed);
   std::vector<Index> leaves = leaves_by_area(analysis.reeb);
   leaves.resize(std::min<std::size_t>(leaves.size(), 4));
   std::shuffle(leaves.begin(), leaves.end(), rng);

@@ -8,6 +8,7 @@
 #include "reebkit/deform/deformation.h"
 
 #include <cstdint>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -40,5 +41,8 @@ std::vector<Index> leaves_by_area(const ReebGraph& graph);
 /// unchanged. Throws InvalidArgument for leaves < 0 or angles outside
 /// 0 <= min <= max <= 180.
 RandomPose random_pose(const MeshAnalysis& analysis, const PoseOptions& options = {});
+
+/// The same with every draw from `rng` (options.seed unused).
+RandomPose random_pose(const MeshAnalysis& analysis, const PoseOptions& options, std::mt19937_64& rng);
 
 }  // namespace reebkit

@@ -17,6 +17,10 @@ Eigen::Matrix3d random_rotation(std::uint64_t seed) {
 
 Similarity random_similarity(const Mesh& mesh, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
+  return random_similarity(mesh, rng);
+}
+
+Similarity random_similarity(const Mesh& mesh, std::mt19937_64& rng) {
   const double diagonal = (mesh.vertices.colwise().maxCoeff() - mesh.vertices.colwise().minCoeff()).norm();
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   Similarity s;
