@@ -284,8 +284,12 @@ void rigid(const fs::path& out, const fs::path& dir, const fs::path& cla, int si
         for (std::size_t j = 0; j < a.record.signature.size(); ++j)
           attribute = std::max(attribute, std::abs(a.record.signature[j] - b.record.signature[j]));
       }
+      const FeaturePoints &fa = a.analysis.features, &fb = b.analysis.features;
       char line[256];
-      std::snprintf(line, sizeof line, "%s,%d,%.6f,%d,%d,%d,%.3g\n", name.c_str(), s, similarity.scale,
+      std::snprintf(line, sizeof line, "%s,%d,%.6f,%d,%d,%zu,%zu,%zu,%zu,%d,%d,%d,%.3g\n", name.c_str(), s, similarity.scale,
+                    sorted({fa.source1, fa.source2}) == sorted({fb.source1, fb.source2}) ? 1 : 0,
+                    sorted(fa.extrema1) == sorted(fb.extrema1) && sorted(fa.extrema2) == sorted(fb.extrema2) ? 1 : 0,
+                    fa.extrema1.size(), fb.extrema1.size(), fa.extrema2.size(), fb.extrema2.size(),
                     sorted(b.analysis.features.vertices) == sorted(a.analysis.features.vertices) ? 1 : 0,
                     b.analysis.reeb.edges == a.analysis.reeb.edges && b.analysis.reeb.vertex_node == a.analysis.reeb.vertex_node ? 1 : 0,
                     same_shape ? 1 : 0, same_shape ? attribute : -1.0);
@@ -320,7 +324,8 @@ void rigid(const fs::path& out, const fs::path& dir, const fs::path& cla, int si
     mesh_rows[k] = line;
   }
   std::ofstream r(out / "rigid.csv"), m(out / "shrec_meshes.csv"), p(out / "shrec_pairs.csv");
-  r << "mesh,similarity,scale,same_features,same_graph,same_attribute_shape,max_attribute_difference\n";
+  r << "mesh,similarity,scale,same_diameter_ends,same_extrema,extrema1,variant_extrema1,extrema2,variant_extrema2,"
+       "same_features,same_graph,same_attribute_shape,max_attribute_difference\n";
   m << "mesh,nodes,leaves,cycles,features,features_fmm,handpicked,precision05,recall05,precision10,recall10\n";
   for (std::size_t k = 0; k < models.size(); ++k) r << rigid_rows[k], m << mesh_rows[k];
   p << "a,b,distance\n";

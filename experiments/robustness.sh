@@ -9,8 +9,8 @@
 # (ctest -R unpack_datasets). REPORT_DIR (default results/robustness/):
 # report.md and its PNG plots. The measured tables (CSV) are derived from
 # academic-use data: they stay in BUILD_DIR/robustness/ and are never
-# committed. THREADS (default 2) sets the threads; PER_CLASS (default 2) the
-# SHREC07 meshes per class in the sampling section; SIMILARITIES (default 3)
+# committed. THREADS (default 2) sets the threads; PER_CLASS (default 5) the
+# SHREC07 meshes per class in the sampling section; SIMILARITIES (default 10)
 # the random similarities per SHREC07 mesh.
 set -euo pipefail
 
@@ -22,8 +22,8 @@ build=$(cd "$1" && pwd)
 source_dir=$(cd "$(dirname "$0")/.." && pwd)
 report=${2:-$source_dir/results/robustness}
 export OMP_NUM_THREADS=${THREADS:-2}
-per_class=${PER_CLASS:-2}
-similarities=${SIMILARITIES:-3}
+per_class=${PER_CLASS:-5}
+similarities=${SIMILARITIES:-10}
 data=$build/data
 shrec=$data/shrec07_watertight
 cla=$shrec/shrec07_watertight.cla
@@ -43,9 +43,9 @@ step() {  # step NAME COMMAND...: runs it and says how long it took
   echo "== $name"
   "$@"
   echo "== $name: $((SECONDS - start)) s"
-  echo "$name,$((SECONDS - start))" >> "$work/steps.csv"
+  printf '%s\t%s\n' "$name" "$((SECONDS - start))" >> "$work/steps.tsv"
 }
-echo "step,seconds" > "$work/steps.csv"
+printf 'step\tseconds\n' > "$work/steps.tsv"
 
 # Closed CGAL meshes with a shape (500-20,000 vertices, one component), and
 # one pose per TOSCA class.
@@ -64,6 +64,6 @@ step "2: sampling, closed CGAL meshes" "$robustness" sampling "$work" cgal "${cg
 step "2: sampling, TOSCA (one pose per class)" "$robustness" sampling "$work" tosca "${tosca[@]}"
 step "3: TOSCA poses" "$robustness" tosca "$work" "$data/tosca_dev"
 step "6: timing" env OMP_NUM_THREADS=1 "$robustness" timing "$work" "$data/tosca_dev/michael0.off" 2000 10000 40000 100000
-echo "total,$((SECONDS - start_all))" >> "$work/steps.csv"
+printf 'total\t%s\n' "$((SECONDS - start_all))" >> "$work/steps.tsv"
 step "report and plots" /usr/bin/python3 "$source_dir/tools/figures/robustness_report.py" "$work" "$report"
 echo "report: $report/report.md"
