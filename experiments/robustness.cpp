@@ -102,12 +102,6 @@ std::vector<Index> sorted(std::vector<Index> v) {
   return v;
 }
 
-std::vector<Index> identity(Index n) {
-  std::vector<Index> out(static_cast<std::size_t>(n));
-  for (Index v = 0; v < n; ++v) out[static_cast<std::size_t>(v)] = v;
-  return out;
-}
-
 /// One perturbation of the sampling section: its kind and strength.
 struct Perturbation {
   std::string kind;
@@ -131,10 +125,10 @@ MeshVariant perturb(const Mesh& mesh, const MeshAnalysis& analysis, const Pertur
     return remesh(mesh, options);
   }
   if (p.kind == "subdivide") return subdivide_mesh(mesh, static_cast<int>(p.strength));
-  if (p.kind == "noise") return {add_normal_noise(mesh, NoiseOptions{p.strength, 1, NoiseShape::Gaussian}), identity(mesh.num_vertices())};
+  if (p.kind == "noise") return same_vertices(add_normal_noise(mesh, NoiseOptions{p.strength, 1, NoiseShape::Gaussian}));
   PoseOptions options;
   options.seed = static_cast<std::uint64_t>(p.strength);
-  return {original_surface(random_pose(analysis, options).mesh), identity(mesh.num_vertices())};
+  return same_vertices(original_surface(random_pose(analysis, options).mesh));
 }
 
 struct VariantRow {

@@ -11,10 +11,6 @@
 namespace reebkit {
 namespace {
 
-double diagonal(const Mesh& mesh) {
-  return (mesh.vertices.colwise().maxCoeff() - mesh.vertices.colwise().minCoeff()).norm();
-}
-
 TEST(Remeshing, ANewTriangulationOfTheSameSurface) {
   for (const Mesh& mesh : {make_torus(48, 16), make_star(StarOptions{5, 4})})
     for (const double factor : {0.5, 1.0, 2.0}) {
@@ -25,7 +21,7 @@ TEST(Remeshing, ANewTriangulationOfTheSameSurface) {
       EXPECT_NEAR(out.mesh.num_vertices(), target, 0.02 * target + 1) << "x" << factor;
       EXPECT_EQ(analyze_topology(out.mesh).genus, analyze_topology(mesh).genus) << "x" << factor;
       const SurfaceLocator original(mesh);
-      const double d = diagonal(mesh);
+      const double d = bounding_box_diagonal(mesh);
       // Shares no vertex: every vertex is away from every original vertex.
       for (Index v = 0; v < out.mesh.num_vertices(); ++v) {
         const Vec3 p = out.mesh.vertices.row(v);

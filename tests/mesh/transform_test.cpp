@@ -11,7 +11,7 @@ namespace {
 
 TEST(Transform, RandomSimilarityIsARotationAScaleAndATranslationInRange) {
   const Mesh mesh = make_torus(24, 12);
-  const double diagonal = (mesh.vertices.colwise().maxCoeff() - mesh.vertices.colwise().minCoeff()).norm();
+  const double diagonal = bounding_box_diagonal(mesh);
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
     const Similarity s = random_similarity(mesh, seed);
     EXPECT_TRUE((s.rotation * s.rotation.transpose()).isIdentity(1e-12));

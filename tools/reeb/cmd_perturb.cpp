@@ -116,8 +116,7 @@ int run_perturb(const std::vector<std::string>& args) {
 
   const Mesh original = std::move(load_for_command(mesh_path, false).cleaned.components.front());
   Mesh mesh = original;
-  std::vector<Index> correspondence(static_cast<std::size_t>(original.num_vertices()));
-  for (Index v = 0; v < original.num_vertices(); ++v) correspondence[static_cast<std::size_t>(v)] = v;
+  std::vector<Index> correspondence = same_vertices(original).original_vertex;
   if (vm.count("pose")) {
     const MeshAnalysis analysis = analyze_mesh(original);
     PoseOptions pose_options;

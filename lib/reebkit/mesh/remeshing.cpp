@@ -69,7 +69,7 @@ MeshVariant remesh(const Mesh& mesh, const RemeshOptions& options) {
     result.vertices = next;
   }
 
-  const double tiny = 1e-9 * (mesh.vertices.colwise().maxCoeff() - mesh.vertices.colwise().minCoeff()).norm();
+  const double tiny = 1e-9 * bounding_box_diagonal(mesh);
   out.original_vertex.resize(static_cast<std::size_t>(result.num_vertices()));
   for (Index v = 0; v < result.num_vertices(); ++v) {
     const Vec3 p = result.vertices.row(v);

@@ -66,8 +66,7 @@ Mesh add_normal_noise(const Mesh& mesh, const NoiseOptions& options) {
     const Vec3 n = (p1 - p0).cross(p2 - p0);  // twice the area times the unit normal
     for (int k = 0; k < 3; ++k) normals.row(mesh.triangles(f, k)) += n.transpose();
   }
-  const double diagonal =
-      mesh.num_vertices() > 0 ? (mesh.vertices.colwise().maxCoeff() - mesh.vertices.colwise().minCoeff()).norm() : 0.0;
+  const double diagonal = bounding_box_diagonal(mesh);
   std::mt19937_64 rng(options.seed);
   std::uniform_real_distribution<double> uniform(-options.amplitude * diagonal, options.amplitude * diagonal);
   std::normal_distribution<double> gaussian;  // x amplitude x diagonal

@@ -119,6 +119,13 @@ Index SurfaceLocator::nearest_vertex(const Vec3& p) const {
   return best;
 }
 
+MeshVariant same_vertices(Mesh mesh) {
+  MeshVariant out{std::move(mesh), {}};
+  out.original_vertex.resize(static_cast<std::size_t>(out.mesh.num_vertices()));
+  for (Index v = 0; v < out.mesh.num_vertices(); ++v) out.original_vertex[static_cast<std::size_t>(v)] = v;
+  return out;
+}
+
 std::vector<Index> nearest_original_vertices(const SurfaceLocator& original, const Points& points) {
   std::vector<Index> out(static_cast<std::size_t>(points.rows()));
   for (Eigen::Index v = 0; v < points.rows(); ++v)

@@ -21,6 +21,10 @@ struct MeshVariant {
   std::vector<Index> original_vertex;
 };
 
+/// `mesh` as a variant that keeps the vertices of its original (moved or
+/// not): original_vertex[v] = v.
+MeshVariant same_vertices(Mesh mesh);
+
 /// The point of a surface closest to a query point.
 struct SurfacePoint {
   Index triangle = kInvalidIndex;  ///< the triangle it lies on

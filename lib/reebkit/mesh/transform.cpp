@@ -21,7 +21,7 @@ Similarity random_similarity(const Mesh& mesh, std::uint64_t seed) {
 }
 
 Similarity random_similarity(const Mesh& mesh, std::mt19937_64& rng) {
-  const double diagonal = (mesh.vertices.colwise().maxCoeff() - mesh.vertices.colwise().minCoeff()).norm();
+  const double diagonal = bounding_box_diagonal(mesh);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   Similarity s;
   s.rotation = random_rotation(rng());
