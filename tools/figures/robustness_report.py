@@ -69,12 +69,13 @@ def rigid_section(work, out):
                    "extrema.\n")
 
 
-def sampling_rows(work):
+def sampling_rows(work, failed=False):
+    """The rows of every sampling table; failed=True: only the variants that could not be analysed."""
     rows = []
     for path in sorted(work.glob("sampling_*.csv")):
         group = path.stem[len("sampling_"):]
         for r in read(path):
-            if int(r["rank"]) < 0:
+            if (int(r["rank"]) < 0) != failed:
                 continue
             r["group"] = group
             rows.append(r)
@@ -111,6 +112,11 @@ def sampling_section(work, report, out):
                "diameter after mapping the variant's points to the original (forward), and the reverse "
                "(backward), fast-marching distances on the original. *Rank*: of the original when the variant "
                "queries the group's originals by graph matching (1 = found first).\n")
+    failed = sampling_rows(work, failed=True)
+    if failed:
+        out.append(f"{len(failed)} variants could not be analysed and are left out of the tables: "
+                   + ", ".join(sorted({f"{r['mesh']} ({r['kind']} {float(r['strength']):g})" for r in failed}))
+                   + " (the decimated mesh fell apart at a thin part; the analysis needs one connected piece).\n")
     out.append("| perturbation | strength | geodesic | variants | forward | backward | forward >= 90 % | same nodes "
                "| same leaves | same cycles | mean distance | rank 1 |")
     out.append("|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
