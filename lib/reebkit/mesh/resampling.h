@@ -1,7 +1,8 @@
 // Perturbations of a mesh that keep the shape: a different sampling of the
 // same surface, and small noise along the normals. They make the variants of
 // the embedded demo collection (reeb variants), whose classes a retrieval
-// method has to recognize through these changes.
+// method has to recognize through these changes, and some of the variants of
+// the robustness experiments (reeb perturb, experiments/robustness.sh).
 #pragma once
 
 #include "reebkit/mesh/surface_correspondence.h"

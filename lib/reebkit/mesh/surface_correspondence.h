@@ -34,7 +34,8 @@ struct SurfacePoint {
 
 /// Closest-point queries on one mesh's triangles, through a uniform grid of
 /// their bounding boxes (cells about twice the mean edge length, at most
-/// about 8 triangles per cell on a regular mesh), built once.
+/// about 8 triangles per cell on a regular mesh), built once. Keeps a
+/// reference to the mesh, which must outlive it.
 class SurfaceLocator {
  public:
   /// \pre mesh has at least one triangle (else InvalidArgument naming mesh.source).
