@@ -142,11 +142,12 @@ def sampling_section(work, report, out):
 
     fig, axes = plt.subplots(1, 4, figsize=(13, 3.2), sharey=True)
     for ax, kind in zip(axes, order):
-        for m, style in zip(METHODS, ["o-", "s--"]):
+        for m, style, color in zip(METHODS, ["o-", "s--"], ["C0", "C2"]):
             strengths = sorted({k[1] for k in table if k[0] == kind and k[2] == m})
-            ax.plot(strengths, [summarize(table[(kind, x, m)])["forward"] for x in strengths], style, label=f"{m} forward")
-            ax.plot(strengths, [summarize(table[(kind, x, m)])["backward"] for x in strengths], style, alpha=0.4,
-                    label=f"{m} backward")
+            ax.plot(strengths, [summarize(table[(kind, x, m)])["forward"] for x in strengths], style, color=color,
+                    label=f"{m} forward")
+            ax.plot(strengths, [summarize(table[(kind, x, m)])["backward"] for x in strengths], style, color=color,
+                    alpha=0.35, label=f"{m} backward")
         ax.set_title(kind)
         ax.set_xlabel({"decimate": "vertices kept", "remesh": "vertex count factor", "subdivide": "rounds",
                        "noise": "sigma / diagonal"}[kind])
