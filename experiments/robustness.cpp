@@ -1,8 +1,8 @@
 // The measurements of the robustness suite (experiments/robustness.sh):
 // Tierny et al. 2006 claim invariance to rotation, translation and scale
-// (section 4.1.2, section 5.3), robustness to pose and to mesh sampling
-// (section 5.3, figures 9 and 11), stability within a class, and give
-// timings (section 5.1). Each subcommand writes one or two CSV tables into
+// (sections 4.1.1 and 5.3), robustness to pose and to mesh sampling
+// (section 4.1.2, figure 5; section 5.3, figures 9 and 11), stability within
+// a class (section 5.3), and give timings (section 5.1). Each subcommand writes one or two CSV tables into
 // OUT_DIR; tools/figures/robustness_report.py turns them into the report.
 //
 //   robustness rigid OUT_DIR SHREC_DIR CLA [SIMILARITIES]   rigid.csv, shrec_meshes.csv, shrec_pairs.csv

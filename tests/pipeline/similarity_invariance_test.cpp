@@ -1,4 +1,4 @@
-// Tierny et al. 2006, section 5.3 (and section 4.1.2: geodesic distances
+// Tierny et al. 2006, section 5.3 (and section 4.1.1: geodesic distances
 // normalized by the diameter): the feature points, the Reeb graph and its
 // attributes do not change under rotation, translation and uniform scaling.
 #include "reebkit/mesh/resampling.h"

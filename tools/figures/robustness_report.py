@@ -53,8 +53,9 @@ def rigid_section(work, out):
     failing = sorted({r["mesh"] for r in rows if not (int(r["same_features"]) and int(r["same_graph"]))})
     ok = features == n and graph == n and within == n
     out.append("## 1. Rigid transformations and scale\n")
-    out.append("*Claim* (sections 4.1.2 and 5.3): geodesic distances normalized by the diameter make the feature "
-               "points, the Reeb graph and its attributes invariant to rotation, translation and uniform scaling.\n")
+    out.append("*Claim* (sections 4.1.1 and 5.3, \"affine invariance\"): geodesic distances normalized by the "
+               "diameter make the feature points and the Reeb graph invariant to rotation, translation and uniform "
+               "scaling (and reebkit's attributes, docs/method.md).\n")
     out.append(f"*Measured*: {meshes} SHREC07 meshes, {n // max(meshes, 1)} random similarities each (uniform "
                "rotation, scale 2^u, translation u x diagonal, u uniform in [-1, 1]; `random_similarity`), "
                "Dijkstra: identical feature points (the same vertices; their selection order may differ where two "
@@ -101,8 +102,8 @@ def sampling_section(work, report, out):
     rows = [r for r in sampling_rows(work) if r["kind"] != "pose"]
     groups = sorted({r["group"] for r in rows})
     out.append("## 2. Mesh sampling\n")
-    out.append("*Claim* (section 5.3, figure 11): the feature points and the graph are robust to the sampling of "
-               "the surface.\n")
+    out.append("*Claim* (section 4.1.2, figure 5, and section 5.3, figure 11): the feature points and the graph are "
+               "robust to variations in mesh sampling.\n")
     out.append("Variants per mesh: decimation to 75/50/25 % of the vertices (quadric edge collapse, "
                "`decimate_mesh`), remeshing at 0.5x/1x/2x the vertex count (`remesh`: a new triangulation sharing "
                "no vertex), one midpoint subdivision (`subdivide_mesh`), Gaussian noise along the normals with "
@@ -197,8 +198,8 @@ def pose_section(work, report, out):
     rows = read(work / "tosca_poses.csv")
     pairs = read(work / "tosca_pairs.csv")
     out.append("## 3. Pose\n")
-    out.append("*Claim* (section 5.3, figure 9): the feature points and the graph are robust to pose changes "
-               "(isometries of the surface).\n")
+    out.append("*Claim* (section 4.1.1 and section 5.3, figures 9(c), 9(d)): geodesic distances make the feature "
+               "points and the graph robust to model pose.\n")
     out.append("TOSCA (54 meshes, 5 classes): each pose against the first pose of its class (same triangulation, "
                "vertex i corresponds: the points need no mapping), repeatability as in section 2 on the first "
                "pose.\n")
@@ -265,8 +266,8 @@ def classes_section(work, report, out):
     for p in pairs:
         (within if labels[int(p["a"])] == labels[int(p["b"])] else across).append(float(p["distance"]))
     out.append("## 4. Stability within a class\n")
-    out.append("*Claim* (section 5.3): meshes of one class have similar graphs, nearer to each other than to "
-               "other classes.\n")
+    out.append("*Claim* (section 5.3, \"stability of the high level description\", figure 9): the graphs of models "
+               "of one class are quite similar.\n")
     w, a = np.median(within), np.median(across)
     share = mean(x < a for x in within)
     out.append(f"*Measured* on all {len(meshes)} SHREC07 meshes (Dijkstra, default options): median graph distance "
@@ -301,7 +302,7 @@ def classes_section(work, report, out):
 def handpicked_section(work, out):
     meshes = read(work / "shrec_meshes.csv")
     out.append("## 5. Feature points against the hand-picked points of SHREC07\n")
-    out.append("*Claim* (section 4.1, figure 5): the feature points lie at the extremities of the prominent "
+    out.append("*Claim* (section 4.1.2, figure 5): the feature points lie at the extremities of the prominent "
                "components. SHREC07's `features/*.vts` hold hand-picked points (extremities, and others). "
                "Precision: share of our feature points (Dijkstra, default options) with a hand-picked point within r "
                "x the diameter (fast-marching distance); recall: the reverse.\n")

@@ -109,7 +109,7 @@ FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOption
   // rounded to whole units: distances that differ by less are ties, broken by
   // vertex id, so that a rotated, moved or scaled copy of the mesh, whose
   // distances differ from these by rounding only, breaks every tie the same
-  // way and keeps its feature points (the invariance of section 4.1.2; a
+  // way and keeps its feature points (the invariance of sections 4.1.1 and 5.3; a
   // symmetric shape has many such ties). Sums of whole units are exact.
   const double unit = kTieGrid * out.diameter;
   const auto snapped = [unit](std::vector<double> f) {
