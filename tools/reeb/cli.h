@@ -72,5 +72,6 @@ int run_eval(const std::vector<std::string>& args);
 int run_query(const std::vector<std::string>& args);
 int run_distances(const std::vector<std::string>& args);
 int run_variants(const std::vector<std::string>& args);
+int run_perturb(const std::vector<std::string>& args);
 
 }  // namespace reebkit::cli

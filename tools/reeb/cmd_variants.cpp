@@ -6,7 +6,7 @@
 //   NAME_rotated.off   randomly rotated, rescaled (x 0.5 .. 2) and translated
 //   NAME_resampled.off the same surface sampled differently (resample_mesh)
 //   NAME_posed1.off    one leaf component of the Reeb graph turned by 20..35
-//                      degrees either way (deform_component, Tierny et al.
+//                      degrees either way (random_pose, Tierny et al.
 //                      2006, section 5.2)
 //   NAME_posed2.off    two leaf components turned (one, the other way, when
 //                      the graph has a single leaf)
@@ -18,14 +18,12 @@
 #include "reeb/cli.h"
 #include "reebkit/collection/mesh_inputs.h"
 #include "reebkit/core/error.h"
-#include "reebkit/deform/deformation.h"
+#include "reebkit/deform/pose.h"
 #include "reebkit/io/off.h"
 #include "reebkit/mesh/resampling.h"
 #include "reebkit/mesh/transform.h"
 #include "reebkit/pipeline/analyze_mesh.h"
 
-#include <algorithm>
-#include <cmath>
 #include <fstream>
 #include <iostream>
 #include <random>
@@ -42,67 +40,6 @@ std::string output_name(const std::string& listed) {
   std::filesystem::path name = std::filesystem::path(listed).lexically_normal();
   if (name.is_absolute() || name.empty() || *name.begin() == "..") name = name.filename();
   return name.replace_extension().generic_string();
-}
-
-/// Leaves of the Reeb graph (nodes with a parent and no child), largest area first.
-std::vector<Index> leaves_by_area(const ReebGraph& g) {
-  std::vector<char> has_parent(g.nodes.size(), 0), has_child(g.nodes.size(), 0);
-  for (const auto& [from, to] : g.edges) {
-    has_child[static_cast<std::size_t>(from)] = 1;
-    has_parent[static_cast<std::size_t>(to)] = 1;
-  }
-  std::vector<Index> leaves;
-  for (Index n = 0; n < g.num_nodes(); ++n)
-    if (has_parent[static_cast<std::size_t>(n)] && !has_child[static_cast<std::size_t>(n)]) leaves.push_back(n);
-  std::stable_sort(leaves.begin(), leaves.end(), [&](Index a, Index b) {
-    return g.nodes[static_cast<std::size_t>(a)].area > g.nodes[static_cast<std::size_t>(b)].area;
-  });
-  return leaves;
-}
-
-/// Plans turning `count` of the (up to four) largest leaves, picked at random,
-/// each by a random angle of 20..35 degrees either way; a single leaf asked
-/// for twice turns once by -angle. Leaves without a default axis are passed over.
-std::vector<Deformation> plan_pose(const MeshAnalysis& analysis, int count, std::mt19937_64& rng) {
-  std::vector<Index> leaves = leaves_by_area(analysis.reeb);
-  leaves.resize(std::min<std::size_t>(leaves.size(), 4));
-  std::shuffle(leaves.begin(), leaves.end(), rng);
-  std::uniform_real_distribution<double> magnitude(20.0, 35.0);
-  std::bernoulli_distribution negative(0.5);
-  std::vector<Deformation> plans;
-  for (const Index leaf : leaves) {
-    if (static_cast<int>(plans.size()) == count) break;
-    DeformOptions options;
-    options.node = leaf;
-    options.angle_degrees = (negative(rng) ? -1.0 : 1.0) * magnitude(rng);
-    try {
-      plans.push_back(plan_deformation(analysis, options));
-    } catch (const InvalidArgument& e) {
-      std::cerr << "warning: " << analysis.mesh.source << ": leaf " << leaf << " not turned: " << e.what() << "\n";
-    }
-  }
-  if (count == 2 && plans.size() == 1) {
-    Deformation back = plans.front();
-    back.angle_degrees = -back.angle_degrees;
-    return {back};
-  }
-  return plans;
-}
-
-Mesh posed(const MeshAnalysis& analysis, const std::vector<Deformation>& plans) {
-  Mesh out = analysis.mesh;
-  for (const Deformation& plan : plans) out = apply_deformation(out, plan);  // leaves: no plan moves another's pivot
-  return out;
-}
-
-Similarity random_similarity(const Mesh& mesh, std::mt19937_64& rng) {
-  const double diagonal = (mesh.vertices.colwise().maxCoeff() - mesh.vertices.colwise().minCoeff()).norm();
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  Similarity s;
-  s.rotation = random_rotation(rng());
-  s.scale = std::exp2(unit(rng));
-  s.translation = Vec3(unit(rng), unit(rng), unit(rng)) * diagonal;
-  return s;
 }
 
 }  // namespace
@@ -137,12 +74,15 @@ int run_variants(const std::vector<std::string>& args) {
     variants.emplace_back("_rotated", transformed(mesh, random_similarity(mesh, rng)));
     variants.emplace_back("_resampled", resample_mesh(mesh, ResamplingOptions{0.2, rng()}));
     for (int turned = 1; turned <= 2; ++turned) {
-      const std::vector<Deformation> plans = plan_pose(analysis, turned, rng);
-      if (plans.empty()) {
+      PoseOptions pose_options;
+      pose_options.leaves = turned;
+      RandomPose pose = random_pose(analysis, pose_options, rng);
+      for (const std::string& why : pose.skipped) std::cerr << "warning: " << meshes[i].name << ": " << why << "\n";
+      if (pose.turns.empty()) {
         std::cerr << "warning: " << meshes[i].name << ": no leaf to turn, no _posed" << turned << " copy\n";
         continue;
       }
-      variants.emplace_back("_posed" + std::to_string(turned), posed(analysis, plans));
+      variants.emplace_back("_posed" + std::to_string(turned), std::move(pose.mesh));
     }
     variants.emplace_back("_noisy", add_normal_noise(mesh, NoiseOptions{0.002, rng()}));
 

@@ -54,6 +54,14 @@ inline double triangle_area(const Mesh& mesh, Index t) {
   return 0.5 * (b - a).cross(c - a).norm();
 }
 
+/// Length of the diagonal of the axis-aligned bounding box of the vertices
+/// of `mesh` (0 without vertices): the scale that perturbation strengths are
+/// fractions of.
+inline double bounding_box_diagonal(const Mesh& mesh) {
+  if (mesh.num_vertices() == 0) return 0.0;
+  return (mesh.vertices.colwise().maxCoeff() - mesh.vertices.colwise().minCoeff()).norm();
+}
+
 /// Total area of the triangles of `mesh`.
 inline double surface_area(const Mesh& mesh) {
   double area = 0.0;

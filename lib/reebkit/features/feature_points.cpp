@@ -5,6 +5,7 @@
 #include "reebkit/features/persistence.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <string>
@@ -101,16 +102,27 @@ FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOption
   if (options.start_vertex != kCanonicalSeed) consider(options.start_vertex);
   out.sweeps = passes;
   const Index s1 = ends.s1, s2 = ends.s2;
-  const std::vector<double>& f1 = ends.f1;
-  const std::vector<double>& f2 = ends.f2;
   out.source1 = s1;
   out.source2 = s2;
-  out.diameter = f1[static_cast<std::size_t>(s2)];
+  out.diameter = ends.f1[static_cast<std::size_t>(s2)];
+  // From here on, distances are counted in units of kTieGrid x diameter and
+  // rounded to whole units: distances that differ by less are ties, broken by
+  // vertex id, so that a rotated, moved or scaled copy of the mesh, whose
+  // distances differ from these by rounding only, breaks every tie the same
+  // way and keeps its feature points (the invariance of sections 4.1.1 and 5.3; a
+  // symmetric shape has many such ties). Sums of whole units are exact.
+  const double unit = kTieGrid * out.diameter;
+  const auto snapped = [unit](std::vector<double> f) {
+    if (unit > 0.0)
+      for (double& x : f) x = std::round(x / unit);
+    return f;
+  };
+  const std::vector<double> f1 = snapped(std::move(ends.f1)), f2 = snapped(std::move(ends.f2));
 
   // Eq. (5): E1, E2 are the local extrema (figure 3 classification), those
   // that persist at least min_persistence x diameter when it is set.
   const auto extrema = [&](const std::vector<double>& f) {
-    return options.min_persistence > 0.0 ? persistent_extrema(graph, f, options.min_persistence * out.diameter)
+    return options.min_persistence > 0.0 ? persistent_extrema(graph, f, std::round(options.min_persistence / kTieGrid))
                                          : local_extrema(graph, f);
   };
   out.extrema1 = extrema(f1);
@@ -118,16 +130,16 @@ FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOption
 
   // Eq. (6): v belongs to F when an extremum of f1 and one of f2 lie within
   // epsilon of it, and no feature point already taken lies within epsilon.
-  const double radius = options.epsilon * out.diameter;
+  const double radius = options.epsilon * out.diameter, radius_units = std::round(options.epsilon / kTieGrid);
   const GeodesicOptions near{radius};
-  const std::vector<double> to_e1 = solver.run(out.extrema1, near).distance;
-  const std::vector<double> to_e2 = solver.run(out.extrema2, near).distance;
+  const std::vector<double> to_e1 = snapped(solver.run(out.extrema1, near).distance);
+  const std::vector<double> to_e2 = snapped(solver.run(out.extrema2, near).distance);
   std::vector<Index> candidates;
   std::set_union(out.extrema1.begin(), out.extrema1.end(), out.extrema2.begin(), out.extrema2.end(),
                  std::back_inserter(candidates));
   const auto at = [](const std::vector<double>& a, Index v) { return a[static_cast<std::size_t>(v)]; };
   candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
-                                  [&](Index v) { return !(at(to_e1, v) < radius && at(to_e2, v) < radius); }),
+                                  [&](Index v) { return !(at(to_e1, v) < radius_units && at(to_e2, v) < radius_units); }),
                    candidates.end());
   // Greedy order: extrema of both functions first (gap 0), then the closest
   // pairs; among equals the more extreme vertex (larger f1 + f2), then the id.

@@ -45,6 +45,10 @@ struct FeatureOptions {
   double min_persistence = 0.01;
 };
 
+/// Geodesic distances closer than this fraction of the diameter count as
+/// equal in extract_feature_points (ties, broken by vertex id).
+inline constexpr double kTieGrid = 1e-9;
+
 struct FeaturePoints {
   /// F of eq. (6), in selection order: pairs of coinciding extrema first,
   /// then by how far apart the E1 and E2 extrema of a candidate lie.

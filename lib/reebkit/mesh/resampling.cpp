@@ -1,6 +1,7 @@
 #include "reebkit/mesh/resampling.h"
 
 #include "reebkit/core/error.h"
+#include "reebkit/mesh/surface_correspondence.h"
 
 #include <cmath>
 #include <random>
@@ -45,6 +46,15 @@ Mesh resample_mesh(const Mesh& mesh, const ResamplingOptions& options) {
   return out;
 }
 
+MeshVariant subdivide_mesh(const Mesh& mesh, int rounds) {
+  if (rounds < 0) throw InvalidArgument(mesh.source + ": negative number of subdivision rounds");
+  MeshVariant out;
+  out.mesh = mesh;
+  for (int round = 0; round < rounds; ++round) out.mesh = resample_mesh(out.mesh, ResamplingOptions{0.0, 1});
+  out.original_vertex = nearest_original_vertices(SurfaceLocator(mesh), out.mesh.vertices);
+  return out;
+}
+
 Mesh add_normal_noise(const Mesh& mesh, const NoiseOptions& options) {
   if (!(options.amplitude >= 0.0 && std::isfinite(options.amplitude)))
     throw InvalidArgument("add_normal_noise: amplitude " + std::to_string(options.amplitude) +
@@ -56,13 +66,13 @@ Mesh add_normal_noise(const Mesh& mesh, const NoiseOptions& options) {
     const Vec3 n = (p1 - p0).cross(p2 - p0);  // twice the area times the unit normal
     for (int k = 0; k < 3; ++k) normals.row(mesh.triangles(f, k)) += n.transpose();
   }
-  const double diagonal =
-      mesh.num_vertices() > 0 ? (mesh.vertices.colwise().maxCoeff() - mesh.vertices.colwise().minCoeff()).norm() : 0.0;
+  const double diagonal = bounding_box_diagonal(mesh);
   std::mt19937_64 rng(options.seed);
-  std::uniform_real_distribution<double> amount(-options.amplitude * diagonal, options.amplitude * diagonal);
+  std::uniform_real_distribution<double> uniform(-options.amplitude * diagonal, options.amplitude * diagonal);
+  std::normal_distribution<double> gaussian;  // x amplitude x diagonal
   Mesh out = mesh;
   for (Index v = 0; v < mesh.num_vertices(); ++v) {
-    const double shift = amount(rng);
+    const double shift = options.shape == NoiseShape::Uniform ? uniform(rng) : options.amplitude * diagonal * gaussian(rng);
     const double length = normals.row(v).norm();
     if (length > 0.0) out.vertices.row(v) += shift / length * normals.row(v);
   }

@@ -1,10 +1,11 @@
 // Perturbations of a mesh that keep the shape: a different sampling of the
 // same surface, and small noise along the normals. They make the variants of
 // the embedded demo collection (reeb variants), whose classes a retrieval
-// method has to recognize through these changes.
+// method has to recognize through these changes, and some of the variants of
+// the robustness experiments (reeb perturb, experiments/robustness.sh).
 #pragma once
 
-#include "reebkit/core/mesh.h"
+#include "reebkit/mesh/surface_correspondence.h"
 
 #include <cstdint>
 
@@ -25,11 +26,25 @@ struct ResamplingOptions {
 /// Throws InvalidArgument for a jitter outside [0, 0.5).
 Mesh resample_mesh(const Mesh& mesh, const ResamplingOptions& options = {});
 
+/// How far each vertex moves along its normal, as a fraction `amplitude` of
+/// the bounding box diagonal.
+enum class NoiseShape {
+  Uniform,  ///< uniform in [-amplitude, amplitude] x diagonal
+  Gaussian  ///< normal with mean 0 and standard deviation amplitude x diagonal
+};
+
+/// `rounds` steps of midpoint subdivision (resample_mesh with jitter 0): the
+/// same surface, 4^rounds times the triangles, the vertices of `mesh` first
+/// with their ids; original_vertex maps each new vertex to the nearest
+/// corner of its original triangle (a midpoint: either end of its edge).
+/// Throws InvalidArgument naming mesh.source for negative rounds.
+MeshVariant subdivide_mesh(const Mesh& mesh, int rounds);
+
 struct NoiseOptions {
-  /// Largest displacement, as a fraction of the bounding box diagonal; each
-  /// vertex moves by a uniform amount in [-amplitude, amplitude] x diagonal.
+  /// Size of the displacements, as a fraction of the bounding box diagonal (see NoiseShape).
   double amplitude = 0.002;
   std::uint64_t seed = 1;  ///< same seed, same mesh
+  NoiseShape shape = NoiseShape::Uniform;
 };
 
 /// `mesh` with every vertex moved along its unit normal (the sum of its

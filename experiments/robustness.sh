@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# The robustness suite: the invariance and robustness claims of Tierny et al.
+# 2006 (sections 4.1.2, 5.1, 5.3) measured on SHREC 2007 Watertight, the
+# closed CGAL meshes and TOSCA, as one report with plots.
+#
+#   experiments/robustness.sh BUILD_DIR [REPORT_DIR]
+#
+# BUILD_DIR: a build with the target robustness and the datasets unpacked
+# (ctest -R unpack_datasets). REPORT_DIR (default results/robustness/):
+# report.md and its PNG plots. The measured tables (CSV) are derived from
+# academic-use data: they stay in BUILD_DIR/robustness/ and are never
+# committed. THREADS (default 2) sets the threads; PER_CLASS (default 5) the
+# SHREC07 meshes per class in the sampling section; SIMILARITIES (default 10)
+# the random similarities per SHREC07 mesh.
+set -euo pipefail
+
+if [ $# -lt 1 ] || [ $# -gt 2 ]; then
+  echo "usage: $0 BUILD_DIR [REPORT_DIR]" >&2
+  exit 2
+fi
+build=$(cd "$1" && pwd)
+source_dir=$(cd "$(dirname "$0")/.." && pwd)
+report=${2:-$source_dir/results/robustness}
+export OMP_NUM_THREADS=${THREADS:-2}
+per_class=${PER_CLASS:-5}
+similarities=${SIMILARITIES:-10}
+data=$build/data
+shrec=$data/shrec07_watertight
+cla=$shrec/shrec07_watertight.cla
+work=$build/robustness
+robustness=$build/experiments/robustness
+
+[ -x "$robustness" ] || { echo "$0: $robustness is missing: build the target robustness" >&2; exit 1; }
+for d in "$cla" "$data/tosca_dev" "$data/cgal_meshes"; do
+  [ -e "$d" ] || { echo "$0: $d is missing: run ctest --test-dir $build -R unpack_datasets" >&2; exit 1; }
+done
+mkdir -p "$work" "$report"
+start_all=$SECONDS
+
+step() {  # step NAME COMMAND...: runs it and says how long it took
+  local name=$1 start=$SECONDS
+  shift
+  echo "== $name"
+  "$@"
+  echo "== $name: $((SECONDS - start)) s"
+  printf '%s\t%s\n' "$name" "$((SECONDS - start))" >> "$work/steps.tsv"
+}
+printf 'step\tseconds\n' > "$work/steps.tsv"
+
+# Closed CGAL meshes with a shape (500-20,000 vertices, one component), and
+# one pose per TOSCA class.
+cgal=()
+for m in anchor_dense bear bull cactus camel couplingdown cow dino elephant elk femur hand homer knot1 man \
+         rotor_small triceratops turbine; do
+  cgal+=("$data/cgal_meshes/$m.off")
+done
+tosca=()
+for m in cat0 centaur0 dog0 horse0 michael0; do tosca+=("$data/tosca_dev/$m.off"); done
+
+step "1, 4, 5: every SHREC07 mesh: similarities, graphs, hand-picked points" \
+  "$robustness" rigid "$work" "$shrec" "$cla" "$similarities"
+step "2: sampling, SHREC07 ($per_class per class)" "$robustness" shrec-sample "$work" "$shrec" "$cla" "$per_class"
+step "2: sampling, closed CGAL meshes" "$robustness" sampling "$work" cgal "${cgal[@]}"
+step "2: sampling, TOSCA (one pose per class)" "$robustness" sampling "$work" tosca "${tosca[@]}"
+step "3: TOSCA poses" "$robustness" tosca "$work" "$data/tosca_dev"
+step "6: timing" env OMP_NUM_THREADS=1 "$robustness" timing "$work" "$data/tosca_dev/michael0.off" 2000 10000 40000 100000
+printf 'total\t%s\n' "$((SECONDS - start_all))" >> "$work/steps.tsv"
+step "report and plots" /usr/bin/python3 "$source_dir/tools/figures/robustness_report.py" "$work" "$report"
+echo "report: $report/report.md"

@@ -1,0 +1,96 @@
+#include "reebkit/mesh/decimation.h"
+
+#include "reebkit/core/error.h"
+
+#include <meshoptimizer.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <string>
+
+namespace reebkit {
+
+namespace {
+
+/// The triangles meshoptimizer keeps for a target of `target_triangles`.
+std::vector<unsigned> simplify(const std::vector<unsigned>& indices, const std::vector<float>& positions,
+                               std::size_t target_triangles) {
+  std::vector<unsigned> out(indices.size());
+  // target_error 1 = the whole extent of the mesh: the count alone stops the collapses.
+  const std::size_t n = meshopt_simplify(out.data(), indices.data(), indices.size(), positions.data(),
+                                         positions.size() / 3, 3 * sizeof(float), 3 * target_triangles, 1.0f, 0, nullptr);
+  out.resize(n);
+  return out;
+}
+
+/// `indices` without the triangles whose vertex set appears more than once:
+/// a collapse can fold two triangles onto each other (a fin of zero volume
+/// hanging on one edge, which makes that edge non-manifold); both go.
+std::vector<unsigned> without_fins(const std::vector<unsigned>& indices) {
+  std::map<std::array<unsigned, 3>, int> count;
+  const auto key = [&](std::size_t t) {
+    std::array<unsigned, 3> k{indices[3 * t], indices[3 * t + 1], indices[3 * t + 2]};
+    std::sort(k.begin(), k.end());
+    return k;
+  };
+  for (std::size_t t = 0; t < indices.size() / 3; ++t) ++count[key(t)];
+  std::vector<unsigned> out;
+  for (std::size_t t = 0; t < indices.size() / 3; ++t)
+    if (count[key(t)] == 1) out.insert(out.end(), indices.begin() + static_cast<std::ptrdiff_t>(3 * t), indices.begin() + static_cast<std::ptrdiff_t>(3 * t + 3));
+  return out;
+}
+
+std::size_t used_vertices(const std::vector<unsigned>& indices, std::size_t num_vertices) {
+  std::vector<char> used(num_vertices, 0);
+  for (const unsigned v : indices) used[v] = 1;
+  return static_cast<std::size_t>(std::count(used.begin(), used.end(), 1));
+}
+
+}  // namespace
+
+MeshVariant decimate_mesh(const Mesh& mesh, const DecimationOptions& options) {
+  if (!(options.vertex_ratio > 0.0 && options.vertex_ratio <= 1.0))
+    throw InvalidArgument(mesh.source + ": decimation ratio " + std::to_string(options.vertex_ratio) +
+                          " is outside (0, 1]");
+  MeshVariant out;
+  const auto nv = static_cast<std::size_t>(mesh.num_vertices());
+  const auto target = static_cast<std::size_t>(std::llround(options.vertex_ratio * static_cast<double>(nv)));
+  std::vector<unsigned> indices(static_cast<std::size_t>(mesh.triangles.size()));
+  for (Index t = 0; t < mesh.num_triangles(); ++t)
+    for (int k = 0; k < 3; ++k) indices[static_cast<std::size_t>(3 * t + k)] = static_cast<unsigned>(mesh.triangles(t, k));
+  std::vector<unsigned> kept = indices;
+  if (target < nv) {
+    std::vector<float> positions(3 * nv);
+    for (std::size_t v = 0; v < nv; ++v)
+      for (int d = 0; d < 3; ++d) positions[3 * v + static_cast<std::size_t>(d)] = static_cast<float>(mesh.vertices(static_cast<Index>(v), d));
+    // Steered by triangles (Euler: #F/#V stays about constant), corrected
+    // from the vertex count each try gives.
+    double triangles = static_cast<double>(mesh.num_triangles()) * options.vertex_ratio;
+    for (int attempt = 0; attempt < 6; ++attempt) {
+      kept = without_fins(simplify(indices, positions, static_cast<std::size_t>(std::max(1.0, std::round(triangles)))));
+      const auto got = static_cast<double>(used_vertices(kept, nv));
+      if (std::abs(got - static_cast<double>(target)) <= options.tolerance * static_cast<double>(target)) break;
+      triangles *= static_cast<double>(target) / std::max(got, 1.0);
+    }
+  }
+  std::vector<Index> new_id(nv, kInvalidIndex);
+  for (const unsigned v : kept)
+    if (new_id[v] == kInvalidIndex) new_id[v] = 0;
+  for (std::size_t v = 0; v < nv; ++v)
+    if (new_id[v] != kInvalidIndex) {
+      new_id[v] = static_cast<Index>(out.original_vertex.size());
+      out.original_vertex.push_back(static_cast<Index>(v));
+    }
+  out.mesh.source = mesh.source;
+  out.mesh.vertices.resize(static_cast<Index>(out.original_vertex.size()), 3);
+  for (std::size_t i = 0; i < out.original_vertex.size(); ++i)
+    out.mesh.vertices.row(static_cast<Index>(i)) = mesh.vertices.row(out.original_vertex[i]);
+  out.mesh.triangles.resize(static_cast<Index>(kept.size() / 3), 3);
+  for (std::size_t i = 0; i < kept.size(); ++i)
+    out.mesh.triangles(static_cast<Index>(i / 3), static_cast<Index>(i % 3)) = new_id[kept[i]];
+  return out;
+}
+
+}  // namespace reebkit

@@ -1,0 +1,45 @@
+#include "reebkit/mesh/decimation.h"
+
+#include "reebkit/core/error.h"
+#include "reebkit/mesh/mesh_topology.h"
+#include "reebkit/mesh/shapes.h"
+
+#include <gtest/gtest.h>
+
+
+namespace reebkit {
+namespace {
+
+/// Largest distance from 2000 points sampled on `from` to the surface of `to`.
+double one_sided_distance(const Mesh& from, const Mesh& to) {
+  return sampled_distance_to_surface(from, SurfaceLocator(to), 2000, 7);
+}
+
+TEST(Decimation, HitsTheTargetCountAndKeepsTheSurface) {
+  for (const Mesh& mesh : {make_torus(64, 24), make_icosphere(5), make_star(StarOptions{5, 5})})
+    for (const double ratio : {0.75, 0.5, 0.25}) {
+      const MeshVariant out = decimate_mesh(mesh, DecimationOptions{ratio, 0.02});
+      const double target = ratio * mesh.num_vertices();
+      EXPECT_NEAR(out.mesh.num_vertices(), target, 0.02 * target + 1) << "ratio " << ratio;
+      EXPECT_EQ(analyze_topology(out.mesh).genus, analyze_topology(mesh).genus);
+      // Hausdorff-like, both ways, sampled: within 1 % of the diagonal.
+      EXPECT_LT(one_sided_distance(out.mesh, mesh), 0.01 * bounding_box_diagonal(mesh)) << "ratio " << ratio;
+      EXPECT_LT(one_sided_distance(mesh, out.mesh), 0.01 * bounding_box_diagonal(mesh)) << "ratio " << ratio;
+      // Kept vertices keep their positions: the correspondence is exact.
+      ASSERT_EQ(out.original_vertex.size(), static_cast<std::size_t>(out.mesh.num_vertices()));
+      for (Index v = 0; v < out.mesh.num_vertices(); ++v)
+        EXPECT_EQ(out.mesh.vertices.row(v), mesh.vertices.row(out.original_vertex[static_cast<std::size_t>(v)]));
+    }
+}
+
+TEST(Decimation, RatioOneKeepsTheMeshAndBadRatiosThrow) {
+  const Mesh mesh = make_icosphere(2);
+  const MeshVariant same = decimate_mesh(mesh, DecimationOptions{1.0, 0.02});
+  EXPECT_EQ(same.mesh.vertices, mesh.vertices);
+  EXPECT_EQ(same.mesh.triangles, mesh.triangles);
+  for (const double bad : {0.0, -0.5, 1.5})
+    EXPECT_THROW(decimate_mesh(mesh, DecimationOptions{bad, 0.02}), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace reebkit
