@@ -149,8 +149,10 @@ TEST(ExtractCollection, ResumeAfterACrashComputesOnlyTheRestAndGivesTheSameFile)
   const std::vector<MeshInput> inputs = list_mesh_inputs({(dir / "meshes").string()});
   EXPECT_EXIT(index_and_die(inputs, dir / "c.h5"), ::testing::ExitedWithCode(3), "");
   ::unsetenv(kShared);
-  // The checkpoints after entries 2 and 4 are on disk; the 5th is not.
-  ASSERT_EQ(CollectionReader(dir / "c.h5").size(), 4);
+  // The checkpoints after entries 2 and 4 are on disk, the 5th is not, in
+  // c.h5.partial: a new collection is renamed into place at the end only.
+  ASSERT_EQ(CollectionReader(dir / "c.h5.partial").size(), 4);
+  ASSERT_FALSE(std::filesystem::exists(dir / "c.h5"));
 
   ExtractionOptions resume = with_threads(2);
   resume.resume = true;
@@ -158,6 +160,7 @@ TEST(ExtractCollection, ResumeAfterACrashComputesOnlyTheRestAndGivesTheSameFile)
   EXPECT_EQ(summary.skipped, 4);
   EXPECT_EQ(summary.kept, 4);
   EXPECT_EQ(summary.computed(), 4);  // the analyses run: only the meshes not in the file
+  EXPECT_FALSE(std::filesystem::exists(dir / "c.h5.partial"));
 
   extract_collection(inputs, {}, dir / "whole.h5", with_threads(2));
   expect_same_files(dir / "c.h5", dir / "whole.h5");
