@@ -2,9 +2,12 @@
 
 #include "reebkit/core/option_value.h"
 #include "reebkit/core/timer.h"
+#include "reebkit/io/file_bytes.h"
+#include "reebkit/store/collection_file.h"
 #include "reebkit/pipeline/analysis_options.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 
@@ -33,14 +36,21 @@ bool parse(const std::vector<std::string>& args, const std::string& usage,
            const po::options_description& options, const po::positional_options_description& positional,
            po::variables_map& vm) {
   po::options_description all(options);
-  all.add_options()("help,h", "show this help");
+  all.add_options()("help,h", "show this help")("verbose", "on a failure of HDF5, also print its error stack");
   po::store(po::command_line_parser(args).options(all).positional(positional).run(), vm);
   if (vm.count("help")) {
     std::cout << "usage: " << usage << "\n\n" << all << "\n";
     return false;
   }
   po::notify(vm);
+  print_hdf5_error_stacks(vm.count("verbose") > 0);
   return true;
+}
+
+void check_outputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs) {
+  const std::vector<std::filesystem::path> input_paths(inputs.begin(), inputs.end());
+  for (const std::string& output : outputs)
+    if (!output.empty()) check_output_file(output, input_paths);
 }
 
 po::options_description analysis_options(AnalysisOptions& analysis) {
