@@ -240,6 +240,21 @@ TEST(ReebIndexCli, AFullDiskGivesOneClearErrorKeepsThePreviousFileAndResumeGoesO
       << resumed_out;
   EXPECT_EQ(CollectionReader(c).size(), 5);
   EXPECT_EQ(files_in(dir / ""), (std::vector<std::string>{"c.h5", "meshes"}));
+
+  // The commands that read a collection and write files: the same (before:
+  // distances and export -o reported the error but left partial files).
+  write_bytes(dir / "out", "previous\n");
+  const std::vector<std::pair<std::string, int>> writers = {
+      {"distances " + q(c) + " -o " + q(dir / "out"), 50},  // the 5 x 5 float32 matrix: 100 bytes
+      {"distances " + q(c) + " -o " + q(dir / "d.matrix") + " --ascii " + q(dir / "out"), 100},
+      {"export " + q(c) + " elk.off --json -o " + q(dir / "out"), 100}};
+  for (const auto& [args, limit] : writers) {
+    const auto [status, out] = run_command(with_file_size_limit(kReeb + " " + args, limit) + " 2>&1");
+    EXPECT_EQ(status, 1) << args << "\n" << out;
+    EXPECT_TRUE(contains(out, {(dir / "out").string() + ": write error: File too large"})) << out;
+    EXPECT_EQ(read_file_bytes(dir / "out"), "previous\n");
+  }
+  EXPECT_EQ(files_in(dir / ""), (std::vector<std::string>{"c.h5", "d.matrix", "meshes", "out"}));
 }
 
 TEST(ReebIndexCli, ResumeLabelsEveryEntryWithTheClassesGivenAndKeepsThemOtherwise) {
