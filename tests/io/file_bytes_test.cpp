@@ -4,13 +4,11 @@
 // are checked before any work.
 #include "reebkit/io/file_bytes.h"
 
-#include <gtest/gtest.h>
-#include <unistd.h>
-
-#include <algorithm>
-
 #include "io/io_test_util.h"
 #include "support/test_support.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
 
 namespace reebkit::test {
 namespace {

@@ -2,13 +2,12 @@
 // with the first one's pid; the lock file goes when the lock is released.
 #include "reebkit/io/file_lock.h"
 
-#include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include "io/io_test_util.h"
 #include "reebkit/io/file_bytes.h"
 #include "support/test_support.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
 
 namespace reebkit::test {
 namespace {

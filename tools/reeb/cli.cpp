@@ -3,8 +3,8 @@
 #include "reebkit/core/option_value.h"
 #include "reebkit/core/timer.h"
 #include "reebkit/io/file_bytes.h"
-#include "reebkit/store/collection_file.h"
 #include "reebkit/pipeline/analysis_options.h"
+#include "reebkit/store/collection_file.h"
 
 #include <algorithm>
 #include <filesystem>

@@ -1,5 +1,7 @@
 #include "reebkit/io/file_bytes.h"
 
+#include "reebkit/core/error.h"
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -9,8 +11,6 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
-
-#include "reebkit/core/error.h"
 
 namespace reebkit {
 

@@ -1,5 +1,7 @@
 #include "reebkit/io/file_lock.h"
 
+#include "reebkit/core/error.h"
+
 #include <fcntl.h>
 #include <sys/file.h>
 #include <sys/stat.h>
@@ -8,8 +10,6 @@
 #include <cerrno>
 #include <cstring>
 #include <string>
-
-#include "reebkit/core/error.h"
 
 namespace reebkit {
 

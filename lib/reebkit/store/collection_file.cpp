@@ -31,8 +31,8 @@
 #include <atomic>
 #include <cerrno>
 #include <chrono>
-#include <cstring>
 #include <cmath>
+#include <cstring>
 #include <ctime>
 #include <limits>
 #include <unordered_map>
