@@ -184,6 +184,16 @@ void refuse_other_analysis(const std::filesystem::path& path, const Provenance& 
   throw Error(message + "\n(resume with the file's options, or index into a new file)");
 }
 
+/// Whether `path` opens as a collection file.
+bool opens_as_collection(const std::filesystem::path& path) {
+  try {
+    const CollectionReader reader(path);
+    return true;
+  } catch (const Error&) {
+    return false;
+  }
+}
+
 /// Everything checked before any mesh is read: the options, the output
 /// (its folder, not an input) and that the classes name some input.
 void check_before_work(const std::vector<MeshInput>& inputs, const std::vector<PsbClass>& classes,
@@ -249,6 +259,8 @@ ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const
   // the end; resume goes on in place, in OUTPUT.partial when an interrupted
   // run left one.
   const std::filesystem::path partial = output.string() + ".partial";
+  if (options.resume && std::filesystem::exists(partial) && !opens_as_collection(partial))
+    std::filesystem::remove(partial);  // killed while being created, before its first checkpoint: no entry in it
   const bool resume_partial = options.resume && std::filesystem::exists(partial);
   const bool in_place = options.resume && !resume_partial && std::filesystem::exists(output);
   const std::filesystem::path target = in_place ? output : partial;

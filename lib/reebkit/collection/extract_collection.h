@@ -74,7 +74,8 @@ std::string analysis_options_json(const AnalysisOptions& options);
 ///
 /// With options.resume the entries of an existing `output` (or of the
 /// `output` + ".partial" an interrupted run left, which is then completed and
-/// renamed over `output`) are kept, and an input whose (name, content hash)
+/// renamed over `output`; one that does not open was killed while being
+/// created, holds no entry and is dropped) are kept, and an input whose (name, content hash)
 /// is among them is skipped. An input whose
 /// name is in the file with another hash (the file changed) is recomputed,
 /// and its old entry dropped: the file is rewritten, without the stale
