@@ -77,7 +77,8 @@ TEST(ReebFeaturesCli, MinPersistenceIsAnOption) {
 
   const auto [bad, bad_out] = run_command(reeb + " features " + shell_quoted(cow) + " --min-persistence -1 2>&1");
   EXPECT_EQ(bad, 1);
-  EXPECT_NE(bad_out.find("min_persistence must lie in [0, 1]"), std::string::npos) << bad_out;
+  EXPECT_NE(bad_out.find("analysis option min_persistence: -1 is out of its range [0, 1]"), std::string::npos)
+      << bad_out;
 }
 
 TEST(ReebFeaturesCli, OutputsAreCheckedBeforeWorkAndWrittenWholeOrNotAtAll) {
@@ -95,6 +96,13 @@ TEST(ReebFeaturesCli, OutputsAreCheckedBeforeWorkAndWrittenWholeOrNotAtAll) {
     EXPECT_EQ(out.find("read and cleaned"), std::string::npos) << out;
   }
   EXPECT_EQ(read_text(dir / "elk.off"), mesh);
+  // So is an analysis option out of its range.
+  const auto [range, range_out] = run_command(reeb + " graph " + shell_quoted(dir / "elk.off") + " -o " +
+                                              shell_quoted(dir / "g.json") + " --epsilon 5 2>&1");
+  EXPECT_EQ(range, 1) << range_out;
+  EXPECT_TRUE(contains(range_out, {"reeb graph: error: analysis option epsilon: 5 is out of its range (0, 1]"}))
+      << range_out;
+  EXPECT_EQ(range_out.find("read and cleaned"), std::string::npos) << range_out;
   const auto [missing, missing_out] = run_command(reeb + " graph " + shell_quoted(dir / "elk.off") + " -o " +
                                                   shell_quoted(dir / "g.json") + " --ply " +
                                                   shell_quoted(dir / "no" / "s.ply") + " 2>&1");

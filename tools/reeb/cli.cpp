@@ -57,7 +57,10 @@ po::options_description analysis_options(AnalysisOptions& analysis) {
   po::options_description options("analysis options (a collection keeps those it was indexed with)");
   for (const AnalysisOptionField& field : analysis_option_fields()) {
     const OptionValue current = field.get(analysis);
-    const auto set = [&analysis, &field](const auto& value) { field.set(analysis, OptionValue(value)); };
+    const auto set = [&analysis, &field](const auto& value) {
+      field.set(analysis, OptionValue(value));
+      field.check(analysis);  // out of range: an error before any mesh is read
+    };
     std::visit(
         [&](const auto& value) {
           using T = std::decay_t<decltype(value)>;

@@ -38,7 +38,9 @@ bool parse(const std::vector<std::string>& args, const std::string& usage,
 /// The options of the analysis of a mesh: one flag per analysis option
 /// (pipeline/analysis_options.h; --min-persistence for min_persistence),
 /// each defaulting to its value in `analysis` (the library's default unless
-/// the command changed it) and setting it once the options are parsed.
+/// the command changed it) and setting it once the options are parsed; a
+/// value out of the option's range throws InvalidArgument then, before any
+/// mesh is read.
 po::options_description analysis_options(AnalysisOptions& analysis);
 
 /// The names of the analysis options given on the command line (not left
