@@ -1,6 +1,7 @@
 #include "reebkit/collection/extract_collection.h"
 
 #include "io/io_test_util.h"
+#include "reebkit/core/timer.h"
 #include "reebkit/io/content_hash.h"
 #include "reebkit/io/off.h"
 #include "reebkit/mesh/load_mesh.h"
@@ -11,13 +12,19 @@
 
 #include <gtest/gtest.h>
 
+#include <signal.h>
 #include <stdlib.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <optional>
+#include <random>
+#include <thread>
 
 namespace reebkit::test {
 namespace {
@@ -149,8 +156,10 @@ TEST(ExtractCollection, ResumeAfterACrashComputesOnlyTheRestAndGivesTheSameFile)
   const std::vector<MeshInput> inputs = list_mesh_inputs({(dir / "meshes").string()});
   EXPECT_EXIT(index_and_die(inputs, dir / "c.h5"), ::testing::ExitedWithCode(3), "");
   ::unsetenv(kShared);
-  // The checkpoints after entries 2 and 4 are on disk; the 5th is not.
-  ASSERT_EQ(CollectionReader(dir / "c.h5").size(), 4);
+  // The checkpoints after entries 2 and 4 are on disk, the 5th is not, in
+  // c.h5.partial: a new collection is renamed into place at the end only.
+  ASSERT_EQ(CollectionReader(dir / "c.h5.partial").size(), 4);
+  ASSERT_FALSE(std::filesystem::exists(dir / "c.h5"));
 
   ExtractionOptions resume = with_threads(2);
   resume.resume = true;
@@ -158,6 +167,7 @@ TEST(ExtractCollection, ResumeAfterACrashComputesOnlyTheRestAndGivesTheSameFile)
   EXPECT_EQ(summary.skipped, 4);
   EXPECT_EQ(summary.kept, 4);
   EXPECT_EQ(summary.computed(), 4);  // the analyses run: only the meshes not in the file
+  EXPECT_FALSE(std::filesystem::exists(dir / "c.h5.partial"));
 
   extract_collection(inputs, {}, dir / "whole.h5", with_threads(2));
   expect_same_files(dir / "c.h5", dir / "whole.h5");
@@ -167,6 +177,80 @@ TEST(ExtractCollection, ResumeAfterACrashComputesOnlyTheRestAndGivesTheSameFile)
   EXPECT_EQ(again.computed(), 0);
   EXPECT_EQ(again.skipped, 8);
   expect_same_files(dir / "c.h5", dir / "whole.h5");
+}
+
+/// Indexes `inputs` into `output` with a checkpoint after every entry and is
+/// killed with SIGKILL `delay_ms` after the start by a thread of its own (no
+/// destructor, no flush: wherever the writer was).
+[[noreturn]] void index_and_get_killed(const std::vector<MeshInput>& inputs, const std::filesystem::path& output,
+                                       int delay_ms) {
+  std::thread([delay_ms] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));
+    ::raise(SIGKILL);
+  }).detach();
+  ExtractionOptions options = with_threads(2);
+  options.checkpoint_entries = 1;
+  extract_collection(inputs, {}, output, options);
+  for (;;) ::pause();  // done before the kill: it comes all the same
+}
+
+TEST(ExtractCollection, KilledAtRandomMomentsThenResumedGivesTheUninterruptedFile) {
+  // As above, the death test children re-run this test binary; only the
+  // parent (which owns the folder) measures, resumes and compares.
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  constexpr const char* kShared = "REEBKIT_KILL_TEST_DIR";
+  constexpr const char* kDelay = "REEBKIT_KILL_TEST_DELAY_MS";
+  std::optional<TempDir> own;
+  if (std::getenv(kShared) == nullptr) {
+    own.emplace();
+    write_collection(*own);
+    ::setenv(kShared, (*own / "").c_str(), 1);
+  }
+  const bool parent = own.has_value();
+  const std::filesystem::path dir = std::getenv(kShared);
+  const std::vector<MeshInput> inputs = list_mesh_inputs({(dir / "meshes").string()});
+  double run_ms = 0;
+  if (parent) {
+    Timer timer;
+    extract_collection(inputs, {}, dir / "whole.h5", with_threads(2));
+    run_ms = timer.lap();
+  }
+  std::mt19937 rng(20261125);
+  for (int trial = 0; trial < 12; ++trial) {
+    const auto output = dir / ("killed" + std::to_string(trial) + ".h5");
+    if (parent) {
+      // From before the first entry to past the end (the rename, the lock): a
+      // child, a fresh process, runs slower than the parent's warm run.
+      const int delay = std::uniform_int_distribution<int>(0, static_cast<int>(4 * run_ms) + 50)(rng);
+      ::setenv(kDelay, std::to_string(delay).c_str(), 1);
+    }
+    EXPECT_EXIT(index_and_get_killed(inputs, output, std::atoi(std::getenv(kDelay))),
+                ::testing::KilledBySignal(SIGKILL), "");
+    if (!parent) continue;
+    SCOPED_TRACE("trial " + std::to_string(trial) + ", killed after " + std::getenv(kDelay) + " ms of " +
+                 std::to_string(run_ms));
+    const std::filesystem::path partial = output.string() + ".partial";
+    const std::filesystem::path left = std::filesystem::exists(partial) ? partial : output;
+    std::int64_t committed = 0;  // none either when killed while creating the file (it does not open)
+    std::string state = "missing";
+    try {
+      committed = CollectionReader(left).size();
+      state = "opens";
+    } catch (const Error&) {
+      if (std::filesystem::exists(left)) state = "does not open";
+    }
+    std::printf("killed after %s ms (a run: %.0f ms): %s %s, %lld entries\n", std::getenv(kDelay), run_ms,
+                left.filename().c_str(), state.c_str(), static_cast<long long>(committed));
+    ExtractionOptions resume = with_threads(2);
+    resume.resume = true;
+    const ExtractionSummary resumed = extract_collection(inputs, {}, output, resume);
+    EXPECT_EQ(resumed.skipped, committed);
+    expect_same_files(output, dir / "whole.h5");
+    EXPECT_FALSE(std::filesystem::exists(output.string() + ".partial"));
+    EXPECT_FALSE(std::filesystem::exists(output.string() + ".lock"));
+  }
+  ::unsetenv(kShared);
+  ::unsetenv(kDelay);
 }
 
 TEST(ExtractCollection, ReindexingRecomputesOnlyChangedFilesAndKeepsNamesUnique) {

@@ -2,15 +2,22 @@
 // `reeb info` reports it and `reeb export` prints a graph as `reeb graph` does.
 #include "io/io_test_util.h"
 #include "reebkit/collection/mesh_inputs.h"
+#include "reebkit/io/file_bytes.h"
+#include "reebkit/io/file_lock.h"
 #include "reebkit/pipeline/analysis_options.h"
 #include "reebkit/store/collection_file.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 namespace reebkit::test {
 namespace {
@@ -79,6 +86,226 @@ TEST(ReebIndexCli, IndexInfoExportOnTheEmbeddedCollection) {
   ASSERT_EQ(resumed, 0) << resume_out;
   EXPECT_NE(resume_out.find("0 ok, 0 failed, " + std::to_string(meshes) + " already indexed"), std::string::npos)
       << resume_out;
+}
+
+const std::string kReeb = REEB_BINARY;
+
+/// `reeb ARGS 2>&1`: exit status and output.
+std::pair<int, std::string> reeb(const std::string& args) { return run_command(kReeb + " " + args + " 2>&1"); }
+
+/// A folder of meshes copied from datasets/ (and `bad.off`, which no reader
+/// takes, when asked).
+std::filesystem::path mesh_folder(const TempDir& dir, const std::vector<std::string>& meshes, bool bad = false) {
+  const std::filesystem::path folder = dir / "meshes";
+  std::filesystem::create_directories(folder);
+  for (const std::string& mesh : meshes) std::filesystem::copy_file(embedded_dataset_dir() / mesh, folder / mesh);
+  if (bad) write_bytes(folder / "bad.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n");
+  return folder;
+}
+
+std::string q(const std::filesystem::path& path) { return shell_quoted(path); }
+
+TEST(ReebIndexCli, ASecondWriterIsRefusedNamingTheFirstOnesPidAndReadersStillWork) {
+  const TempDir dir;
+  const std::filesystem::path folder = mesh_folder(dir, {"elk.off", "eight.off"});
+  const auto c = dir / "c.h5";
+  ASSERT_EQ(reeb("index " + q(folder) + " -o " + q(c)).first, 0);
+  {
+    const FileLock lock(c);  // this process writes it
+    const auto [status, out] = reeb("index " + q(folder) + " -o " + q(c) + " --resume");
+    EXPECT_EQ(status, 1) << out;
+    const std::string pid = std::to_string(::getpid());
+    EXPECT_TRUE(contains(out, {c.string() + ": another process (pid " + pid + ") is writing it"})) << out;
+    EXPECT_EQ(reeb("info " + q(c)).first, 0);
+  }
+
+  // Two reeb index processes: the second is refused, the first completes.
+  // Before: both wrote the file, which then did not open.
+  const std::filesystem::path many = dir / "many";
+  std::filesystem::create_directories(many);
+  for (int k = 0; k < 60; ++k)
+    std::filesystem::copy_file(embedded_dataset_dir() / "cow.off", many / ("cow" + std::to_string(k) + ".off"));
+  const auto [started, pid] = run_command(kReeb + " index " + q(many) + " -o " + q(c) + " --threads 1 > " +
+                                          q(dir / "first.log") + " 2>&1 & echo $!");
+  ASSERT_EQ(started, 0);
+  const std::string first_pid = pid.substr(0, pid.find('\n'));
+  for (int wait = 0; wait < 1000 && !std::filesystem::exists(dir / "c.h5.lock"); ++wait)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  const auto [second, second_out] = reeb("index " + q(many) + " -o " + q(c));
+  const auto [reader, reader_out] = reeb("info " + q(c));  // the previous collection, while the first writes
+  EXPECT_EQ(second, 1) << second_out;
+  EXPECT_TRUE(contains(second_out, {"another process (pid " + first_pid + ")"})) << second_out;
+  EXPECT_EQ(reader, 0) << reader_out;
+  EXPECT_TRUE(contains(reader_out, {"2 meshes: 2 ok"})) << reader_out;
+  for (int wait = 0; wait < 6000 && run_command("kill -0 " + first_pid + " 2>/dev/null").first == 0; ++wait)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  const auto [info, info_out] = reeb("info " + q(c));
+  EXPECT_EQ(info, 0) << info_out;
+  EXPECT_TRUE(contains(info_out, {"60 meshes: 60 ok"})) << info_out << read_file_bytes(dir / "first.log");
+  EXPECT_FALSE(std::filesystem::exists(dir / "c.h5.lock"));
+}
+
+TEST(ReebIndexCli, BadOutputsOptionsAndClassesAreRefusedBeforeAnyWork) {
+  const TempDir dir;
+  const std::filesystem::path folder = mesh_folder(dir, {"elk.off", "eight.off"});
+  const auto c = dir / "c.h5";
+  ASSERT_EQ(reeb("index " + q(folder) + " -o " + q(c)).first, 0);
+  const std::string collection = read_file_bytes(c), mesh = read_file_bytes(folder / "eight.off");
+
+  // Before: the input mesh overwritten with HDF5; the collection replaced by
+  // one of failed entries, exit 0; the classes silently unused.
+  write_bytes(dir / "none.cla", "PSB 1\n1 1\n\nthings 0 1\nnothing\n");
+  const std::vector<std::pair<std::string, std::string>> refused = {
+      {"index " + q(folder) + " -o " + q(folder / "eight.off"), (folder / "eight.off").string() + ": is an input"},
+      {"index " + q(folder) + " -o " + q(c) + " --epsilon 5", "analysis option epsilon: 5 is out of its range (0, 1]"},
+      {"index " + q(folder) + " -o " + q(c) + " --skeleton-levels 0",
+       "skeleton_levels: 0 is out of its range [1, inf)"},
+      {"index " + q(folder) + " -o " + q(dir / "no" / "c.h5"),
+       "the folder " + (dir / "no").string() + " does not exist"},
+      {"index " + q(folder) + " -o " + q(c) + " --classes " + q(dir / "none.cla"),
+       (dir / "none.cla").string() + ": none of its 1 models names one of the 2 input meshes"},
+      {"index " + q(folder) + " -o " + q(dir / "none.cla") + " --classes " + q(dir / "none.cla"), "is an input"},
+  };
+  for (const auto& [args, message] : refused) {
+    const auto [status, out] = reeb(args);
+    EXPECT_EQ(status, 1) << args << "\n" << out;
+    EXPECT_TRUE(contains(out, {message})) << out;
+    EXPECT_EQ(out.find("indexed"), std::string::npos) << out;  // no mesh was read
+  }
+  EXPECT_EQ(read_file_bytes(c), collection);
+  EXPECT_EQ(read_file_bytes(folder / "eight.off"), mesh);
+  EXPECT_FALSE(std::filesystem::exists(dir / "no"));
+}
+
+TEST(ReebIndexCli, ExitStatusSaysWhetherMeshesFailed) {
+  const TempDir dir;
+  const std::filesystem::path folder = mesh_folder(dir, {"elk.off", "eight.off"}, true);
+  const auto c = dir / "c.h5";
+  const auto [failed, failed_out] = reeb("index " + q(folder) + " -o " + q(c));
+  EXPECT_EQ(failed, 1) << failed_out;  // before: 0
+  EXPECT_TRUE(contains(failed_out, {"wrote " + c.string(), "1 of 3 meshes failed", "--allow-failures"})) << failed_out;
+  const auto [allowed, allowed_out] = reeb("index " + q(folder) + " -o " + q(c) + " --allow-failures");
+  EXPECT_EQ(allowed, 0) << allowed_out;
+  const std::string collection = read_file_bytes(c);
+
+  // Every mesh failed: exit 1 whatever the flag, and the collection stays as it was.
+  for (const std::string flag : {"", " --allow-failures"}) {
+    const auto [status, out] = reeb("index " + q(folder / "bad.off") + " -o " + q(c) + flag);
+    EXPECT_EQ(status, 1) << out;
+    EXPECT_TRUE(contains(out, {"every mesh failed (1): " + c.string() + " left as it was"})) << out;
+  }
+  EXPECT_EQ(read_file_bytes(c), collection);
+  const auto [none, none_out] = reeb("index " + q(folder / "bad.off") + " -o " + q(dir / "new.h5"));
+  EXPECT_EQ(none, 1) << none_out;
+  EXPECT_TRUE(contains(none_out, {"not written"})) << none_out;
+  EXPECT_EQ(files_in(dir / ""), (std::vector<std::string>{"c.h5", "meshes"}));
+
+  // info --list names every entry; distances says how failed rows are filled.
+  const auto [info, info_out] = reeb("info " + q(c) + " --list");
+  EXPECT_EQ(info, 0) << info_out;
+  EXPECT_TRUE(contains(info_out, {"name\tclass\tstatus\tnodes\n", "bad.off\t-\tfailed\t0\n", "elk.off\t-\tok\t"}))
+      << info_out;
+  const auto [distances, distances_out] = reeb("distances " + q(c) + " -o " + q(dir / "d.matrix"));
+  EXPECT_EQ(distances, 0) << distances_out;
+  EXPECT_TRUE(contains(distances_out, {"warning: 1 of 3 entries failed when indexed", "largest float", "bad.off"}))
+      << distances_out;
+}
+
+TEST(ReebIndexCli, AFullDiskGivesOneClearErrorKeepsThePreviousFileAndResumeGoesOn) {
+  const TempDir dir;
+  const std::filesystem::path folder = mesh_folder(dir, {"elk.off", "eight.off", "cow.off", "hand.off", "bunny.off"});
+  const auto c = dir / "c.h5";
+  ASSERT_EQ(reeb("index " + q(folder / "elk.off") + " -o " + q(c)).first, 0);
+  const std::string previous = read_file_bytes(c);
+  // Before: the error, 17 "H5Dclose failed" lines, a segfault at exit (139).
+  for (const std::string verbose : {"", " --verbose"}) {
+    const auto [status, out] = run_command(
+        with_file_size_limit(kReeb + " index " + q(folder) + " -o " + q(c) + " --threads 1" + verbose, 60000) +
+        " 2>&1");
+    EXPECT_EQ(status, 1) << out;
+    EXPECT_TRUE(contains(out, {"reeb index: error: " + c.string() + ".partial: writing: File too large (HDF5: ",
+                               c.string() + " is left as it was; " + c.string() +
+                                   ".partial holds the entries of the last checkpoint"}))
+        << out;
+    EXPECT_EQ(out.find("H5Dclose"), std::string::npos) << out;
+    EXPECT_EQ(out.find("HDF5-DIAG") == std::string::npos, verbose.empty()) << out;
+    EXPECT_EQ(read_file_bytes(c), previous);
+  }
+  // The partial file opens; resume completes it and puts it in place.
+  const std::int64_t committed = CollectionReader(dir / "c.h5.partial").size();
+  const auto [resumed, resumed_out] = reeb("index " + q(folder) + " -o " + q(c) + " --resume");
+  EXPECT_EQ(resumed, 0) << resumed_out;
+  EXPECT_TRUE(contains(resumed_out, {std::to_string(5 - committed) + " ok, 0 failed, " + std::to_string(committed) +
+                                     " already indexed"}))
+      << resumed_out;
+  EXPECT_EQ(CollectionReader(c).size(), 5);
+  EXPECT_EQ(files_in(dir / ""), (std::vector<std::string>{"c.h5", "meshes"}));
+
+  // The commands that read a collection and write files: the same (before:
+  // distances and export -o reported the error but left partial files).
+  write_bytes(dir / "out", "previous\n");
+  const std::vector<std::pair<std::string, int>> writers = {
+      {"distances " + q(c) + " -o " + q(dir / "out"), 50},  // the 5 x 5 float32 matrix: 100 bytes
+      {"distances " + q(c) + " -o " + q(dir / "d.matrix") + " --ascii " + q(dir / "out"), 100},
+      {"export " + q(c) + " elk.off --json -o " + q(dir / "out"), 100}};
+  for (const auto& [args, limit] : writers) {
+    const auto [status, out] = run_command(with_file_size_limit(kReeb + " " + args, limit) + " 2>&1");
+    EXPECT_EQ(status, 1) << args << "\n" << out;
+    EXPECT_TRUE(contains(out, {(dir / "out").string() + ": write error: File too large"})) << out;
+    EXPECT_EQ(read_file_bytes(dir / "out"), "previous\n");
+  }
+  EXPECT_EQ(files_in(dir / ""), (std::vector<std::string>{"c.h5", "d.matrix", "meshes", "out"}));
+}
+
+TEST(ReebIndexCli, ResumeLabelsEveryEntryWithTheClassesGivenAndKeepsThemOtherwise) {
+  const TempDir dir;
+  const std::filesystem::path folder = mesh_folder(dir, {"elk.off", "eight.off"});
+  const auto c = dir / "c.h5";
+  ASSERT_EQ(reeb("index " + q(folder) + " -o " + q(c)).first, 0);
+  write_bytes(dir / "k.cla", "PSB 1\n2 4\n\nanimal 0 3\nelk\ncow\nhand\n\nshape 0 1\neight\n");
+  std::filesystem::copy_file(embedded_dataset_dir() / "cow.off", folder / "cow.off");
+  const auto [resumed, resumed_out] =
+      reeb("index " + q(folder) + " -o " + q(c) + " --resume --classes " + q(dir / "k.cla"));
+  ASSERT_EQ(resumed, 0) << resumed_out;
+  std::filesystem::copy_file(embedded_dataset_dir() / "hand.off", folder / "hand.off");
+  const auto [again, again_out] = reeb("index " + q(folder) + " -o " + q(c) + " --resume");
+  ASSERT_EQ(again, 0) << again_out;
+  // Before: elk and eight, indexed before the classes, had none.
+  const auto [info, info_out] = reeb("info " + q(c) + " --list");
+  EXPECT_TRUE(contains(info_out, {"eight.off\tshape\tok\t", "elk.off\tanimal\tok\t", "cow.off\tanimal\tok\t",
+                                  "hand.off\tanimal\tok\t", "classes from " + (dir / "k.cla").string()}))
+      << info_out;
+}
+
+TEST(ReebIndexCli, ADamagedCollectionIsAClearErrorForEveryCommandThatOpensIt) {
+  const TempDir dir;
+  const std::filesystem::path folder = mesh_folder(dir, {"elk.off", "eight.off"});
+  const auto c = dir / "c.h5";
+  ASSERT_EQ(reeb("index " + q(folder) + " -o " + q(c)).first, 0);
+  const std::string bytes = read_file_bytes(c);
+  std::string flipped = bytes;  // every byte of the metadata after the superblock inverted
+  for (std::size_t i = 48; i < std::min<std::size_t>(flipped.size(), 4096); ++i)
+    flipped[i] = static_cast<char>(~flipped[i]);
+  const std::vector<std::pair<std::string, std::string>> damaged = {
+      {"truncated.h5", bytes.substr(0, bytes.size() / 2)},
+      {"header.h5", bytes.substr(0, 40)},
+      {"flipped.h5", flipped},
+      {"empty.h5", ""},
+  };
+  for (const auto& [name, content] : damaged) {
+    const auto path = dir / name;
+    write_bytes(path, content);
+    for (const std::string& args :
+         {"info " + q(path), "info " + q(path) + " --list", "export " + q(path) + " elk.off --json",
+          "query " + q(path) + " elk.off", "distances " + q(path) + " -o " + q(dir / "d.matrix"),
+          "match " + q(path) + ":elk.off " + q(folder / "elk.off"),
+          "index " + q(folder) + " -o " + q(path) + " --resume"}) {
+      const auto [status, out] = reeb(args);
+      EXPECT_EQ(status, 1) << args << "\n" << out;
+      EXPECT_TRUE(contains(out, {": error: " + path.string() + ": "})) << args << "\n" << out;
+      EXPECT_EQ(out.find("HDF5-DIAG"), std::string::npos) << args << "\n" << out;
+    }
+  }
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -76,7 +77,66 @@ TEST(ReebFeaturesCli, MinPersistenceIsAnOption) {
 
   const auto [bad, bad_out] = run_command(reeb + " features " + shell_quoted(cow) + " --min-persistence -1 2>&1");
   EXPECT_EQ(bad, 1);
-  EXPECT_NE(bad_out.find("min_persistence must lie in [0, 1]"), std::string::npos) << bad_out;
+  EXPECT_NE(bad_out.find("analysis option min_persistence: -1 is out of its range [0, 1]"), std::string::npos)
+      << bad_out;
+}
+
+TEST(ReebFeaturesCli, OutputsAreCheckedBeforeWorkAndWrittenWholeOrNotAtAll) {
+  const TempDir dir;
+  const std::string reeb = REEB_BINARY;
+  std::filesystem::copy_file(embedded_dataset_dir() / "elk.off", dir / "elk.off");
+  const std::string mesh = read_text(dir / "elk.off");
+
+  // An output that is the input, or in a missing folder: refused before the mesh is read.
+  for (const std::string command : {"graph", "features"}) {
+    const auto [status, out] = run_command(reeb + " " + command + " " + shell_quoted(dir / "elk.off") + " -o " +
+                                           shell_quoted(dir / "elk.off") + " 2>&1");
+    EXPECT_EQ(status, 1) << out;
+    EXPECT_TRUE(contains(out, {(dir / "elk.off").string() + ": is an input of this command"})) << out;
+    EXPECT_EQ(out.find("read and cleaned"), std::string::npos) << out;
+  }
+  EXPECT_EQ(read_text(dir / "elk.off"), mesh);
+  // So is an analysis option out of its range.
+  const auto [range, range_out] = run_command(reeb + " graph " + shell_quoted(dir / "elk.off") + " -o " +
+                                              shell_quoted(dir / "g.json") + " --epsilon 5 2>&1");
+  EXPECT_EQ(range, 1) << range_out;
+  EXPECT_TRUE(contains(range_out, {"reeb graph: error: analysis option epsilon: 5 is out of its range (0, 1]"}))
+      << range_out;
+  EXPECT_EQ(range_out.find("read and cleaned"), std::string::npos) << range_out;
+  const auto [missing, missing_out] = run_command(reeb + " graph " + shell_quoted(dir / "elk.off") + " -o " +
+                                                  shell_quoted(dir / "g.json") + " --ply " +
+                                                  shell_quoted(dir / "no" / "s.ply") + " 2>&1");
+  EXPECT_EQ(missing, 1) << missing_out;
+  EXPECT_TRUE(contains(missing_out, {"s.ply: cannot write it: the folder", "does not exist"})) << missing_out;
+  EXPECT_EQ(missing_out.find("read and cleaned"), std::string::npos) << missing_out;
+
+  // A write that fails (a file size limit, as a full disk): exit 1 naming the
+  // file and the reason, the previous file untouched, no partial file.
+  // Before: "wrote f.json", exit 0 and an empty file.
+  std::ofstream(dir / "f.json") << "previous\n";
+  for (const std::string command : {"features", "graph"}) {
+    const auto [status, out] = run_command(
+        with_file_size_limit(reeb + " " + command + " " + shell_quoted(dir / "elk.off") + " -o " +
+                                 shell_quoted(dir / "f.json"),
+                             100) +
+        " 2>&1");
+    EXPECT_EQ(status, 1) << out;
+    EXPECT_TRUE(contains(out, {(dir / "f.json").string() + ": write error: File too large"})) << out;
+    EXPECT_EQ(out.find("wrote"), std::string::npos) << out;
+    EXPECT_EQ(read_text(dir / "f.json"), "previous\n");
+    EXPECT_EQ(files_in(dir / ""), (std::vector<std::string>{"elk.off", "f.json"}));
+  }
+
+  // Standard output that cannot be written: exit 1 (before: 0).
+  const auto [full, full_out] =
+      run_command(reeb + " features " + shell_quoted(dir / "elk.off") + " 2>&1 >/dev/full");
+  EXPECT_EQ(full, 1) << full_out;
+  EXPECT_TRUE(contains(full_out, {"reeb features: error: standard output: write failed: No space left on device"}))
+      << full_out;
+  // A device is written to, never replaced (reeb runs as root in CI).
+  const auto [null, null_out] = run_command(reeb + " features " + shell_quoted(dir / "elk.off") + " -o /dev/null 2>&1");
+  EXPECT_EQ(null, 0) << null_out;
+  EXPECT_FALSE(std::filesystem::is_regular_file("/dev/null"));
 }
 
 }  // namespace

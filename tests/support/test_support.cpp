@@ -1,8 +1,13 @@
 #include "support/test_support.h"
 
+#include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 
 namespace reebkit::test {
 
@@ -31,5 +36,47 @@ std::pair<int, std::string> run_command(const std::string& command) {
 }
 
 std::string shell_quoted(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
+
+std::vector<std::string> files_in(const std::filesystem::path& folder) {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) names.push_back(entry.path().filename());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+std::string with_file_size_limit(const std::string& command, std::uint64_t bytes) {
+  const std::string limit = std::to_string(bytes);
+  return "trap '' XFSZ; exec prlimit --fsize=" + limit + ":" + limit + " " + command;
+}
+
+std::pair<int, std::string> run_with_file_size_limit(std::uint64_t bytes, const std::function<void(int fd)>& body) {
+  int fds[2];
+  if (::pipe(fds) != 0) return {-1, "pipe failed"};
+  std::fflush(nullptr);
+  const pid_t child = ::fork();
+  if (child < 0) return {-1, "fork failed"};
+  if (child == 0) {
+    ::close(fds[0]);
+    ::dup2(fds[1], STDERR_FILENO);
+    ::signal(SIGXFSZ, SIG_IGN);
+    const rlimit limit = {bytes, bytes};
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+    try {
+      body(fds[1]);
+    } catch (...) {
+      std::exit(3);
+    }
+    std::exit(0);
+  }
+  ::close(fds[1]);
+  std::string output;
+  char buffer[4096];
+  for (::ssize_t n = 0; (n = ::read(fds[0], buffer, sizeof buffer)) > 0;)
+    output.append(buffer, static_cast<std::size_t>(n));
+  ::close(fds[0]);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
 
 }  // namespace reebkit::test

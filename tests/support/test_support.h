@@ -4,10 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace reebkit::test {
 
@@ -40,6 +43,21 @@ std::string thrown_message(Action&& action) {
 std::pair<int, std::string> run_command(const std::string& command);
 /// `path` in single quotes, for a shell command line.
 std::string shell_quoted(const std::filesystem::path& path);
+/// The names of the files (and folders) in `folder`, sorted.
+std::vector<std::string> files_in(const std::filesystem::path& folder);
+
+/// A shell command line that runs `command` (one program and its arguments,
+/// no redirections) with files limited to `bytes` (RLIMIT_FSIZE) and SIGXFSZ
+/// ignored, so that a write past the limit fails with EFBIG as on a full disk.
+std::string with_file_size_limit(const std::string& command, std::uint64_t bytes);
+
+/// Runs `body` in a forked child with files limited to `bytes`
+/// (RLIMIT_FSIZE, SIGXFSZ ignored) and returns its exit status (-1 when it
+/// was killed by a signal) and what it wrote to the pipe end it is given
+/// and to its standard error (which goes to that pipe too).
+/// The child leaves with exit(0) after `body` (HDF5 and the C++ runtime
+/// clean up as in a real program), exit(3) when `body` throws.
+std::pair<int, std::string> run_with_file_size_limit(std::uint64_t bytes, const std::function<void(int fd)>& body);
 
 }  // namespace reebkit::test
 

@@ -2,9 +2,12 @@
 
 #include "reebkit/core/option_value.h"
 #include "reebkit/core/timer.h"
+#include "reebkit/io/file_bytes.h"
 #include "reebkit/pipeline/analysis_options.h"
+#include "reebkit/store/collection_file.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 
@@ -33,21 +36,31 @@ bool parse(const std::vector<std::string>& args, const std::string& usage,
            const po::options_description& options, const po::positional_options_description& positional,
            po::variables_map& vm) {
   po::options_description all(options);
-  all.add_options()("help,h", "show this help");
+  all.add_options()("help,h", "show this help")("verbose", "on a failure of HDF5, also print its error stack");
   po::store(po::command_line_parser(args).options(all).positional(positional).run(), vm);
   if (vm.count("help")) {
     std::cout << "usage: " << usage << "\n\n" << all << "\n";
     return false;
   }
   po::notify(vm);
+  print_hdf5_error_stacks(vm.count("verbose") > 0);
   return true;
+}
+
+void check_outputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs) {
+  const std::vector<std::filesystem::path> input_paths(inputs.begin(), inputs.end());
+  for (const std::string& output : outputs)
+    if (!output.empty()) check_output_file(output, input_paths);
 }
 
 po::options_description analysis_options(AnalysisOptions& analysis) {
   po::options_description options("analysis options (a collection keeps those it was indexed with)");
   for (const AnalysisOptionField& field : analysis_option_fields()) {
     const OptionValue current = field.get(analysis);
-    const auto set = [&analysis, &field](const auto& value) { field.set(analysis, OptionValue(value)); };
+    const auto set = [&analysis, &field](const auto& value) {
+      field.set(analysis, OptionValue(value));
+      field.check(analysis);  // out of range: an error before any mesh is read
+    };
     std::visit(
         [&](const auto& value) {
           using T = std::decay_t<decltype(value)>;

@@ -29,6 +29,8 @@ const std::vector<Command>& commands();
 /// Parses `args` against `options` (+ positional), handling --help: returns
 /// false when help was printed and the command should exit 0. Default
 /// values are shown as the library writes them (shortest exact form).
+/// Every command also takes --verbose: a failure of HDF5 then prints HDF5's
+/// error stack too (print_hdf5_error_stacks).
 bool parse(const std::vector<std::string>& args, const std::string& usage,
            const po::options_description& options, const po::positional_options_description& positional,
            po::variables_map& vm);
@@ -36,12 +38,18 @@ bool parse(const std::vector<std::string>& args, const std::string& usage,
 /// The options of the analysis of a mesh: one flag per analysis option
 /// (pipeline/analysis_options.h; --min-persistence for min_persistence),
 /// each defaulting to its value in `analysis` (the library's default unless
-/// the command changed it) and setting it once the options are parsed.
+/// the command changed it) and setting it once the options are parsed; a
+/// value out of the option's range throws InvalidArgument then, before any
+/// mesh is read.
 po::options_description analysis_options(AnalysisOptions& analysis);
 
 /// The names of the analysis options given on the command line (not left
 /// at their default), in table order.
 std::vector<std::string> given_analysis_options(const po::variables_map& vm);
+
+/// Checks each non-empty path of `outputs` with check_output_file (its
+/// folder exists and is writable, it is none of `inputs`), before any work.
+void check_outputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs);
 
 /// --all-components: every connected component, not the largest only.
 void add_components_option(po::options_description& options, bool& all_components);

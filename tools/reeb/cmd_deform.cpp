@@ -77,6 +77,8 @@ int run_deform(const std::vector<std::string>& args) {
     return 0;
   if (!axis.empty() && axis.size() != 3) throw po::error("--axis takes three numbers");
   if (axis.size() == 3) deform.axis = Vec3(axis[0], axis[1], axis[2]);
+  if (vm.count("node") && out_path.empty()) throw po::error("the option '--output' is required with --node");
+  check_outputs({out_path}, {mesh_path});
 
   CleanedMesh cleaned = load_for_command(mesh_path, false).cleaned;
   const MeshAnalysis analysis = analyze_mesh(std::move(cleaned.components.front()));
@@ -86,7 +88,6 @@ int run_deform(const std::vector<std::string>& args) {
     list_nodes(analysis.reeb);
     return 0;
   }
-  if (out_path.empty()) throw po::error("the option '--output' is required with --node");
   const Deformation plan = plan_deformation(analysis, deform);
   print(analysis, plan);
   write_mesh(out_path, apply_deformation(analysis.mesh, plan));

@@ -8,6 +8,7 @@
 #include "reebkit/evaluation/distance_matrix.h"
 #include "reebkit/retrieval/all_pairs.h"
 
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 
@@ -64,10 +65,23 @@ int run_distances(const std::vector<std::string>& args) {
              "[matching options]",
              options, positional, vm))
     return 0;
+  check_outputs({output, ascii}, {path, classes_path});
 
   const CollectionReader collection(path);
   const auto [rows, order] = ordered_rows(collection, path, classes_path);
   std::cerr << "rows in the " << order << "\n";
+  std::vector<std::string> failed;  // a failed entry has a NaN signature (docs/collection-file.md)
+  for (const std::int64_t row : rows)
+    if (std::isnan(collection.signatures()[static_cast<std::size_t>(row) * kSignatureLength]))
+      failed.push_back(collection.names()[static_cast<std::size_t>(row)]);
+  if (!failed.empty()) {
+    std::cerr << "warning: " << failed.size() << " of " << rows.size()
+              << " entries failed when indexed (reeb info lists why); their rows and columns hold the largest "
+                 "float, "
+              << static_cast<float>(kFailedEntryDistance) << ", 0 on the diagonal, so that they rank last:";
+    for (std::size_t k = 0; k < failed.size() && k < 10; ++k) std::cerr << " " << failed[k];
+    std::cerr << (failed.size() > 10 ? " ...\n" : "\n");
+  }
   Timer timer;
   const PairwiseDistances distances = all_pairs_distances(collection, rows, all_pairs);
   const double seconds = timer.lap() / 1000;

@@ -10,6 +10,8 @@
 #include "reebkit/io/file_bytes.h"
 #include "reebkit/io/psb_classes.h"
 
+#include <unistd.h>
+
 #include <cstdlib>
 #include <filesystem>
 #include <iomanip>
@@ -115,11 +117,19 @@ std::string report(const std::vector<Method>& methods, const std::string& cla) {
   return out.str();
 }
 
-/// Draws the micro curves of every method (tools/figures/pr_plot.py).
+/// Draws the micro curves of every method (tools/figures/pr_plot.py) into
+/// a temporary folder, then puts pr.png and pr.svg in `dir` (write_file_bytes).
 void plot(const std::filesystem::path& csv, const std::filesystem::path& dir) {
+  const std::filesystem::path scratch =
+      std::filesystem::temp_directory_path() / ("reeb_eval_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(scratch);
   const std::string command = std::string("/usr/bin/python3 '") + REEBKIT_PR_PLOT_SCRIPT + "' '" + csv.string() +
-                              "' '" + (dir / "pr.png").string() + "' '" + (dir / "pr.svg").string() + "'";
-  if (std::system(command.c_str()) != 0) throw Error((dir / "pr.png").string() + ": plotting failed (" + command + ")");
+                              "' '" + (scratch / "pr.png").string() + "' '" + (scratch / "pr.svg").string() + "'";
+  const bool plotted = std::system(command.c_str()) == 0;
+  if (plotted)
+    for (const char* figure : {"pr.png", "pr.svg"}) write_file_bytes(dir / figure, read_file_bytes(scratch / figure));
+  std::filesystem::remove_all(scratch);
+  if (!plotted) throw Error((dir / "pr.png").string() + ": plotting failed (" + command + ")");
 }
 
 }  // namespace

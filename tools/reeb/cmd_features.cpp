@@ -1,16 +1,16 @@
 // reeb features MESH: feature points and the quotient function f_q of a mesh
 // (Tierny et al. 2006, section 4.1).
 #include "reeb/cli.h"
-#include "reebkit/core/error.h"
+#include "reebkit/io/file_bytes.h"
 #include "reebkit/io/json_writer.h"
 #include "reebkit/io/ply.h"
 #include "reebkit/mesh/hole_filling.h"
 #include "reebkit/output/colormap.h"
 #include "reebkit/pipeline/analyze_mesh.h"
 
-#include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 
 namespace reebkit::cli {
 
@@ -34,8 +34,7 @@ void print(const MeshAnalysis& r, std::size_t index, std::size_t count) {
 
 void write_json(const std::string& path, const std::string& mesh_path, const FeatureOptions& options,
                 const std::vector<MeshAnalysis>& results, double load_ms) {
-  std::ofstream out(path);
-  if (!out) throw Error(path + ": cannot open for writing");
+  std::ostringstream out;
   JsonWriter json(out);
   json.begin_object()
       .field("mesh", mesh_path)
@@ -67,7 +66,7 @@ void write_json(const std::string& path, const std::string& mesh_path, const Fea
     json.end_object();
   }
   json.end_array().end_object();
-  if (!out) throw Error(path + ": write failed");
+  write_file_bytes(path, out.str());
 }
 
 // f_q as viridis colors; the geodesic disc of radius 1.5% of the diameter
@@ -114,6 +113,7 @@ int run_features(const std::vector<std::string>& args) {
   if (!parse(args, "reeb features MESH [-o features.json] [--ply fq.ply] [--all-components] [analysis options]",
              options, positional, vm))
     return 0;
+  check_outputs({json_path, ply_path}, {mesh_path});
 
   LoadedMesh loaded = load_for_command(mesh_path, all_components);
   CleanedMesh& cleaned = loaded.cleaned;

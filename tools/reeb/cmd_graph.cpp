@@ -3,6 +3,7 @@
 // skeleton (section 5.2), as JSON, a colored PLY, OBJ lines and a figure.
 #include "reeb/cli.h"
 #include "reebkit/core/error.h"
+#include "reebkit/io/file_bytes.h"
 #include "reebkit/output/reeb_graph_export.h"
 #include "reebkit/pipeline/analyze_mesh.h"
 
@@ -51,11 +52,15 @@ std::filesystem::path or_temporary(const std::string& path, const std::filesyste
   return scratch / name;
 }
 
-/// Renders the segmentation with the skeleton over it (tools/figures/render_mesh.py).
-void render_png(const std::filesystem::path& ply, const std::filesystem::path& obj, const std::string& png) {
+/// Renders the segmentation with the skeleton over it (tools/figures/render_mesh.py)
+/// into the folder `scratch`, then puts the figure in place (write_file_bytes).
+void render_png(const std::filesystem::path& ply, const std::filesystem::path& obj, const std::string& png,
+                const std::filesystem::path& scratch) {
+  const std::filesystem::path rendered = or_temporary("", scratch, "figure.png");
   const std::string command = std::string("/usr/bin/python3 '") + REEBKIT_RENDER_SCRIPT + "' '" + ply.string() +
-                              "' '" + png + "' --lines '" + obj.string() + "'";
+                              "' '" + rendered.string() + "' --lines '" + obj.string() + "'";
   if (std::system(command.c_str()) != 0) throw Error(png + ": rendering failed (" + command + ")");
+  write_file_bytes(png, read_file_bytes(rendered));
 }
 
 }  // namespace
@@ -81,6 +86,7 @@ int run_graph(const std::vector<std::string>& args) {
              "[--all-components] [analysis options]",
              options, positional, vm))
     return 0;
+  check_outputs({json_path, ply_path, obj_path, png_path}, {mesh_path});
 
   CleanedMesh cleaned = load_for_command(mesh_path, all_components).cleaned;
 
@@ -105,7 +111,7 @@ int run_graph(const std::vector<std::string>& args) {
     obj_path = obj.string();
   }
   if (!png_path.empty()) {
-    render_png(ply_path, obj_path, png_path);
+    render_png(ply_path, obj_path, png_path, scratch);
     std::filesystem::remove_all(scratch);
     std::cout << "wrote " << png_path << "\n";
   }

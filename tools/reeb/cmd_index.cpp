@@ -3,6 +3,7 @@
 #include "reeb/cli.h"
 #include "reebkit/collection/extract_collection.h"
 
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 
@@ -13,6 +14,7 @@ int run_index(const std::vector<std::string>& args) {
   std::vector<std::string> inputs;
   std::string output, classes_path;
   ExtractionOptions extraction;
+  bool allow_failures = false;
   options.add_options()
       ("input", po::value(&inputs)->required()->multitoken(),
        "a folder (searched recursively for .off .obj .ply .stl), a list file (.txt .lst, one path a line) "
@@ -23,12 +25,16 @@ int run_index(const std::vector<std::string>& args) {
       ("threads", po::value(&extraction.threads)->default_value(0), "worker threads (0: as many as OpenMP offers)")
       ("resume", po::bool_switch(&extraction.resume),
        "keep the entries already in the file and compute only new or changed meshes (content hash); the "
-       "analysis options must be the file's");
+       "analysis options must be the file's")
+      ("allow-failures", po::bool_switch(&allow_failures),
+       "exit 0 when some meshes failed (they are failed entries of the file), for batch use; a run in which "
+       "every mesh failed still exits 1");
   options.add(analysis_options(extraction.analysis));
   po::positional_options_description positional;
   positional.add("input", -1);
   po::variables_map vm;
   if (!parse(args, "reeb index INPUT... -o collection.h5 [--classes FILE.cla] [--threads N] [--resume] "
+             "[--allow-failures] "
              "[analysis options]",
              options, positional, vm))
     return 0;
@@ -43,18 +49,28 @@ int run_index(const std::vector<std::string>& args) {
   std::cerr << "indexing " << meshes.size() << " meshes into " << output << "\n";
 
   const ExtractionSummary summary = extract_collection(meshes, classes, output, extraction);
+  const auto failed = static_cast<std::int64_t>(summary.failed.size());
   ProgressState done;
   done.total = static_cast<std::int64_t>(meshes.size());
   done.ok = summary.ok;
-  done.failed = static_cast<std::int64_t>(summary.failed.size());
+  done.failed = failed;
   done.skipped = summary.skipped;
   done.seconds = summary.seconds;
   bar.finish(done);
   for (const FailedMesh& f : summary.failed) std::cerr << "failed: " << f.name << ": " << f.reason << "\n";
   std::cerr << std::fixed << std::setprecision(2) << "writing the file: " << summary.write_seconds << " s ("
             << (summary.seconds > 0 ? 100 * summary.write_seconds / summary.seconds : 0.0) << " % of the time)\n"
-            << std::defaultfloat << "wrote " << output << "\n";
-  return 0;
+            << std::defaultfloat;
+  if (summary.all_failed) {
+    std::cerr << "reeb index: error: every mesh failed (" << failed << "): " << output
+              << (std::filesystem::exists(output) ? " left as it was" : " not written") << "\n";
+    return 1;
+  }
+  std::cerr << "wrote " << output << "\n";
+  if (failed == 0 || allow_failures) return 0;
+  std::cerr << "reeb index: error: " << failed << " of " << summary.computed()
+            << " meshes failed (failed entries of the file; --allow-failures to exit 0)\n";
+  return 1;
 }
 
 }  // namespace reebkit::cli

@@ -6,25 +6,32 @@
 
 #include <iostream>
 #include <map>
+#include <sstream>
 
 namespace reebkit::cli {
 
 int run_info(const std::vector<std::string>& args) {
   po::options_description options("options");
   std::string path;
-  options.add_options()("collection", po::value(&path)->required(), "collection file written by reeb index");
+  bool list = false;
+  options.add_options()("collection", po::value(&path)->required(), "collection file written by reeb index")
+      ("list", po::bool_switch(&list), "also list every entry: name, class, status (ok or failed), nodes");
   po::positional_options_description positional;
   positional.add("collection", 1);
   po::variables_map vm;
-  if (!parse(args, "reeb info collection.h5", options, positional, vm)) return 0;
+  if (!parse(args, "reeb info collection.h5 [--list]", options, positional, vm)) return 0;
 
   const CollectionReader reader(path);
   const Provenance& provenance = reader.provenance();
   std::int64_t ok = 0, nodes = 0, edges = 0;
   std::map<std::string, std::int64_t> classes;
   std::vector<std::pair<std::string, std::string>> failures;
+  std::ostringstream listing;
+  listing << "name\tclass\tstatus\tnodes\n";
   for (std::int64_t i = 0; i < reader.size(); ++i) {
     const GraphRecord e = reader.entry(i);
+    listing << e.name << "\t" << (e.class_label.empty() ? "-" : e.class_label) << "\t" << (e.ok ? "ok" : "failed")
+            << "\t" << e.num_nodes() << "\n";
     if (e.ok) {
       ++ok;
       nodes += e.num_nodes();
@@ -51,6 +58,7 @@ int run_info(const std::vector<std::string>& args) {
   std::cout << classes.size() << " classes" << (classes.empty() ? "" : ":") << "\n";
   for (const auto& [name, count] : classes) std::cout << "  " << name << "\t" << count << "\n";
   for (const auto& [name, reason] : failures) std::cout << "failed: " << name << ": " << reason << "\n";
+  if (list) std::cout << listing.str();
   return 0;
 }
 

@@ -3,6 +3,7 @@
 // are mesh files, analysed on the fly, or COLLECTION.h5:NAME entries.
 #include "reeb/cli.h"
 #include "reebkit/core/error.h"
+#include "reebkit/io/file_bytes.h"
 #include "reebkit/matching/graph_matching.h"
 #include "reebkit/output/obj_lines.h"
 #include "reebkit/pipeline/analysis_options.h"
@@ -12,7 +13,6 @@
 
 #include <algorithm>
 #include <array>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <limits>
@@ -38,7 +38,7 @@ GraphRecord entry_for(const std::string& spec, const AnalysisOptions& analysis) 
   const auto& [path, name] = *in_collection;
   const CollectionReader reader(path);
   const auto index = reader.find(name);
-  if (!index) throw Error(path + ": no mesh named '" + name + "' (reeb info lists them)");
+  if (!index) throw Error(path + ": no mesh named '" + name + "' (reeb info --list lists them)");
   GraphRecord entry = reader.entry(*index);
   if (!entry.ok) throw Error(path + ": mesh '" + name + "' failed when indexed: " + entry.error);
   return entry;
@@ -111,8 +111,7 @@ Box x_range(const GraphRecord& e) {
 /// Both graphs as OBJ lines between node barycenters (B shifted along x to
 /// stand half A's width to the right of A), and a line per matched pair.
 void write_obj(const std::string& path, const GraphRecord& a, const GraphRecord& b, const GraphMatch& match) {
-  std::ofstream out(path);
-  if (!out) throw Error(path + ": cannot open for writing");
+  std::ostringstream out;
   const Box ba = x_range(a), bb = x_range(b);
   const double shift = ba[1] - bb[0] + 0.5 * (ba[1] - ba[0]);
   std::ostringstream title, vertices_note;
@@ -140,7 +139,7 @@ void write_obj(const std::string& path, const GraphRecord& a, const GraphRecord&
     const std::int32_t j = match.correspondence[static_cast<std::size_t>(i)];
     if (j >= 0) obj.line({1 + i, 1 + a.num_nodes() + j});
   }
-  if (!out) throw Error(path + ": write failed");
+  write_file_bytes(path, out.str());
 }
 
 }  // namespace
@@ -164,6 +163,7 @@ int run_match(const std::vector<std::string>& args) {
              "with the collection's analysis options)",
              options, positional, vm))
     return 0;
+  check_outputs({obj_path}, {spec_a, spec_b});
   const AnalysisOptions files = analysis_of_files(spec_a, spec_b, analysis, vm);
   const GraphRecord a = entry_for(spec_a, files), b = entry_for(spec_b, files);
   const GraphMatch match = match_graphs(a, b, matching);

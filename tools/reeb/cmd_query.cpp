@@ -57,7 +57,7 @@ int run_query(const std::vector<std::string>& args) {
   options.add_options()
       ("collection", po::value(&path)->required(), "collection file written by reeb index")
       ("query", po::value(&query)->required(),
-       "a mesh of the collection (its name, as reeb info lists them) or a mesh file (analysed first)")
+       "a mesh of the collection (its name, as reeb info --list lists them) or a mesh file (analysed first)")
       ("k,k", po::value(&query_options.k)->default_value(query_options.k), "results to list")
       ("candidates", po::value(&query_options.candidates)->default_value(query_options.candidates),
        "nearest graph signatures reranked by graph matching (>= the collection size: every mesh)")

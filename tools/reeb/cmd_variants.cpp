@@ -19,14 +19,15 @@
 #include "reebkit/collection/mesh_inputs.h"
 #include "reebkit/core/error.h"
 #include "reebkit/deform/pose.h"
+#include "reebkit/io/file_bytes.h"
 #include "reebkit/io/off.h"
 #include "reebkit/mesh/resampling.h"
 #include "reebkit/mesh/transform.h"
 #include "reebkit/pipeline/analyze_mesh.h"
 
-#include <fstream>
 #include <iostream>
 #include <random>
+#include <sstream>
 
 namespace reebkit::cli {
 
@@ -101,14 +102,13 @@ int run_variants(const std::vector<std::string>& args) {
   std::size_t total = 0;
   for (const auto& c : classes) total += c.second.size();
   const std::filesystem::path cla_path = dir / "variants.cla";
-  std::ofstream cla(cla_path);
+  std::ostringstream cla;
   cla << "PSB 1\n" << classes.size() << " " << total << "\n";
   for (const auto& [class_name, models] : classes) {
     cla << "\n" << class_name << " 0 " << models.size() << "\n";
     for (const std::string& m : models) cla << m << "\n";
   }
-  cla.close();
-  if (!cla) throw Error(cla_path.string() + ": cannot write the class file");
+  write_file_bytes(cla_path, cla.str());
   std::cout << "wrote " << total << " meshes in " << classes.size() << " classes to " << dir.string() << ", classes in "
             << cla_path.string() << "\n";
   return 0;

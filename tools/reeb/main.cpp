@@ -2,6 +2,8 @@
 #include "reeb/cli.h"
 #include "reebkit/core/error.h"
 
+#include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <exception>
 #include <iostream>
@@ -53,7 +55,12 @@ int main(int argc, char** argv) {
   for (const auto& c : reebkit::cli::commands()) {
     if (c.name != std::string(argv[1])) continue;
     try {
-      return c.run(args);
+      const int status = c.run(args);
+      // What was printed must have reached its destination (a full disk, a closed pipe).
+      std::cout.flush();
+      if (!std::cout || std::fflush(stdout) != 0 || std::ferror(stdout))
+        throw reebkit::Error(std::string("standard output: write failed: ") + std::strerror(errno));
+      return status;
     } catch (const boost::program_options::error& e) {
       std::cerr << "reeb " << c.name << ": " << e.what() << " (see reeb " << c.name << " --help)\n";
       return 2;

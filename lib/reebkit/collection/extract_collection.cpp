@@ -3,6 +3,8 @@
 #include "reebkit/core/error.h"
 #include "reebkit/core/timer.h"
 #include "reebkit/io/content_hash.h"
+#include "reebkit/io/file_bytes.h"
+#include "reebkit/io/file_lock.h"
 #include "reebkit/io/json_writer.h"
 #include "reebkit/pipeline/analysis_options.h"
 #include "reebkit/pipeline/mesh_record.h"
@@ -169,15 +171,52 @@ std::vector<std::uint64_t> hash_inputs(const std::vector<MeshInput>& inputs, int
   return hashes;
 }
 
-/// Throws Error unless the collection file `path` was analysed with `analysis`.
-void refuse_other_analysis(const std::filesystem::path& path, const AnalysisOptions& analysis) {
-  const AnalysisOptions indexed = analysis_options_from(CollectionReader(path).provenance().analysis_options);
-  const std::vector<OptionDifference> differences = analysis_option_differences(indexed, analysis);
+/// Throws Error unless the collection file `path`, whose provenance is
+/// `indexed`, was analysed with `analysis`.
+void refuse_other_analysis(const std::filesystem::path& path, const Provenance& indexed,
+                           const AnalysisOptions& analysis) {
+  const std::vector<OptionDifference> differences =
+      analysis_option_differences(analysis_options_from(indexed.analysis_options), analysis);
   if (differences.empty()) return;
   std::string message = path.string() + ": cannot resume: the file was indexed with other analysis options:";
   for (const OptionDifference& d : differences)
     message += "\n  " + d.name + ": " + d.first + " in the file, " + d.second + " now";
   throw Error(message + "\n(resume with the file's options, or index into a new file)");
+}
+
+/// Whether `path` opens as a collection file.
+bool opens_as_collection(const std::filesystem::path& path) {
+  try {
+    const CollectionReader reader(path);
+    return true;
+  } catch (const Error&) {
+    return false;
+  }
+}
+
+/// Everything checked before any mesh is read: the options, the output
+/// (its folder, not an input) and that the classes name some input.
+void check_before_work(const std::vector<MeshInput>& inputs, const std::vector<PsbClass>& classes,
+                       const std::filesystem::path& output, const ExtractionOptions& options) {
+  if (options.batch_size < 1) throw InvalidArgument("extract_collection: batch_size must be >= 1");
+  if (options.threads < 0) throw InvalidArgument("extract_collection: threads must be >= 0");
+  if (!options.analysis.reeb_graph) throw InvalidArgument("extract_collection: the analysis must build the Reeb graph");
+  check_analysis_options(options.analysis);
+  std::vector<std::filesystem::path> input_files;
+  for (const MeshInput& input : inputs) input_files.push_back(input.path);
+  if (!options.classes_file.empty()) input_files.emplace_back(options.classes_file);
+  check_output_file(output, input_files);
+  if (classes.empty() || inputs.empty()) return;
+  const ClassMap class_of_model = class_map(classes);
+  for (const MeshInput& input : inputs)
+    if (!class_of(class_of_model, input.name).empty()) return;
+  std::size_t models = 0;
+  for (const PsbClass& c : classes) models += c.models.size();
+  throw InvalidArgument((options.classes_file.empty() ? std::string("the classes") : options.classes_file) +
+                        ": none of its " + std::to_string(models) + " models names one of the " +
+                        std::to_string(inputs.size()) + " input meshes (e.g. the mesh '" + inputs.front().name +
+                        "'; a model id is a mesh's name, with or without extension, or its file name without "
+                        "extension)");
 }
 
 }  // namespace
@@ -215,15 +254,18 @@ std::string analysis_options_json(const AnalysisOptions& options) {
 
 ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const std::vector<PsbClass>& classes,
                                      const std::filesystem::path& output, const ExtractionOptions& options) {
-  if (options.batch_size < 1) throw InvalidArgument("extract_collection: batch_size must be >= 1");
-  if (options.threads < 0) throw InvalidArgument("extract_collection: threads must be >= 0");
-  if (!options.analysis.reeb_graph) throw InvalidArgument("extract_collection: the analysis must build the Reeb graph");
-  if (options.resume && std::filesystem::exists(output)) refuse_other_analysis(output, options.analysis);
-  const Stopwatch clock;
-  const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
-  ExtractionSummary summary;
-  ProgressState progress;
-  progress.total = static_cast<std::int64_t>(inputs.size());
+  check_before_work(inputs, classes, output, options);
+  const FileLock lock(output);
+  // A new collection is written into OUTPUT.partial, renamed over OUTPUT at
+  // the end; resume goes on in place, in OUTPUT.partial when an interrupted
+  // run left one.
+  const std::filesystem::path partial = output.string() + ".partial";
+  if (options.resume && std::filesystem::exists(partial) && !opens_as_collection(partial))
+    std::filesystem::remove(partial);  // killed while being created, before its first checkpoint: no entry in it
+  const bool resume_partial = options.resume && std::filesystem::exists(partial);
+  const bool in_place = options.resume && !resume_partial && std::filesystem::exists(output);
+  const std::filesystem::path target = in_place ? output : partial;
+  const bool resume = options.resume && std::filesystem::exists(target);
 
   Provenance provenance;
   provenance.options = analysis_options_json(options.analysis);
@@ -231,17 +273,31 @@ ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const
   provenance.command = options.command;
   provenance.classes = classes;
   provenance.classes_file = options.classes_file;
-  const ClassMap class_of_model = class_map(classes);
+  if (resume) {
+    const Provenance indexed = CollectionReader(target).provenance();
+    refuse_other_analysis(target, indexed, options.analysis);
+    if (classes.empty()) {  // resume keeps the file's classes unless given others
+      provenance.classes = indexed.classes;
+      provenance.classes_file = indexed.classes_file;
+    }
+  }
+  const Stopwatch clock;
+  const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
+  ExtractionSummary summary;
+  ProgressState progress;
+  progress.total = static_cast<std::int64_t>(inputs.size());
+  const ClassMap class_of_model = class_map(provenance.classes);
 
   const std::vector<std::uint64_t> hashes = hash_inputs(inputs, threads);
   std::unordered_map<std::string, std::uint64_t> current;  // input name -> hash
   for (std::size_t i = 0; i < inputs.size(); ++i) current.emplace(inputs[i].name, hashes[i]);
 
-  // Resume: which entries of the file stay, and whether stale ones force a rewrite.
+  // Resume: which entries of the file stay, and whether stale ones (or new
+  // classes for every entry) force a rewrite.
   std::unordered_map<std::string, std::uint64_t> kept;
   bool rewrite = false;
   Timer open_time;
-  auto writer = std::make_unique<CollectionWriter>(output, provenance, options.resume);
+  auto writer = std::make_unique<CollectionWriter>(target, provenance, resume);
   for (const auto& [name, hash] : writer->existing()) {
     const auto it = current.find(name);
     if (it != current.end() && it->second != hash)
@@ -249,16 +305,20 @@ ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const
     else
       kept.emplace(name, hash);
   }
+  const bool relabel = resume && !classes.empty() && !writer->existing().empty();
   summary.write_seconds += open_time.lap() / 1000;
-  const std::filesystem::path rewritten = output.string() + ".rewrite";
-  if (rewrite) {
+  const std::filesystem::path rewritten = target.string() + ".rewrite";
+  if (rewrite || relabel) {
     writer->close();
     writer.reset();
-    const CollectionReader old(output);
+    const CollectionReader old(target);
     writer = std::make_unique<CollectionWriter>(rewritten, provenance, false);
     for (std::int64_t i = 0; i < old.size(); ++i) {
       const std::string& name = old.names()[static_cast<std::size_t>(i)];
-      if (kept.count(name) != 0) writer->append(old.entry(i));
+      if (kept.count(name) == 0) continue;
+      GraphRecord entry = old.entry(i);
+      if (relabel) entry.class_label = class_of(class_of_model, name);
+      writer->append(std::move(entry));
     }
     writer->checkpoint();
     summary.write_seconds += open_time.lap() / 1000;
@@ -276,15 +336,36 @@ ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const
   progress.skipped = summary.skipped;
 
   EntrySink sink(*writer, options, summary, progress, clock);
-  compute_in_order(
-      todo.size(), threads, static_cast<std::size_t>(options.batch_size),
-      [&](std::size_t k) {
-        const MeshInput& input = inputs[todo[k]];
-        return compute_entry(input, hashes[todo[k]], class_of(class_of_model, input.name), options.analysis);
-      },
-      sink);
-  sink.timed([&] { writer->close(); });
-  if (rewrite) std::filesystem::rename(rewritten, output);
+  try {
+    compute_in_order(
+        todo.size(), threads, static_cast<std::size_t>(options.batch_size),
+        [&](std::size_t k) {
+          const MeshInput& input = inputs[todo[k]];
+          return compute_entry(input, hashes[todo[k]], class_of(class_of_model, input.name), options.analysis);
+        },
+        sink);
+    sink.timed([&] { writer->close(); });
+  } catch (const Error& e) {
+    if (rewrite || relabel) {  // the rewritten copy is dropped: the file stays as it was
+      std::error_code ignored;
+      std::filesystem::remove(rewritten, ignored);
+      throw Error(std::string(e.what()) + "\n" + target.string() +
+                  " is left as it was: reeb index --resume starts the update again");
+    }
+    const std::string previous = target == output ? ""
+                                 : output.string() + (std::filesystem::exists(output) ? " is left as it was; "
+                                                                                      : " is not written; ");
+    throw Error(std::string(e.what()) + "\n" + previous + target.string() +
+                " holds the entries of the last checkpoint: reeb index --resume goes on from there");
+  }
+  if (rewrite || relabel) std::filesystem::rename(rewritten, target);
+  // A run in which every mesh failed leaves OUTPUT as it was (a collection
+  // of failures only is no result, and a bad option must not replace one).
+  summary.all_failed = summary.ok == 0 && !summary.failed.empty() && summary.kept == 0;
+  if (summary.all_failed && target != output)
+    std::filesystem::remove(target);
+  else if (target != output)
+    std::filesystem::rename(target, output);
   summary.seconds = clock.elapsed() / 1000;
   progress.seconds = summary.seconds;
   if (options.progress && todo.empty()) options.progress(progress);

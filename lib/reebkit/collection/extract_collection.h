@@ -44,6 +44,9 @@ struct ExtractionSummary {
   std::int64_t kept = 0;            ///< entries of the file kept (resume), skipped ones included
   double seconds = 0;               ///< wall time of the whole call
   double write_seconds = 0;         ///< of which the writer thread spent in CollectionWriter calls
+  /// Every mesh computed failed and the file kept none: the output was left
+  /// as it was (not created, not replaced).
+  bool all_failed = false;
   std::int64_t computed() const { return ok + static_cast<std::int64_t>(failed.size()); }
 };
 
@@ -56,21 +59,37 @@ std::string analysis_options_json(const AnalysisOptions& options);
 /// content hash of its file. The file keeps the analysis options (by name,
 /// named_analysis_options) and `classes` in their order. Any exception on a mesh becomes a failed entry
 /// with its message; the batch goes on. Entries are appended in input order
-/// and checkpointed (options), so an interrupted run leaves a file holding
-/// every entry up to the last checkpoint.
+/// and checkpointed (options).
 ///
-/// With options.resume the entries of an existing `output` are kept and an
-/// input whose (name, content hash) is among them is skipped. An input whose
+/// Before any mesh is read it checks the options (check_analysis_options),
+/// the output (check_output_file: its folder exists and is writable, it is
+/// none of the inputs nor the classes file) and that `classes`, when given,
+/// name at least one input; then it takes the lock of `output` (FileLock:
+/// `output` + ".lock"), held to the end, so that a second writer is refused
+/// naming the first one's pid. A new collection is written into `output` +
+/// ".partial" and renamed over `output` at the end: until then `output`
+/// keeps its old content, and an interrupted run leaves the partial file
+/// holding every entry up to its last checkpoint. When every mesh failed
+/// (summary.all_failed) the partial file is removed and `output` left as it was.
+///
+/// With options.resume the entries of an existing `output` (or of the
+/// `output` + ".partial" an interrupted run left, which is then completed and
+/// renamed over `output`; one that does not open was killed while being
+/// created, holds no entry and is dropped) are kept, and an input whose (name, content hash)
+/// is among them is skipped. An input whose
 /// name is in the file with another hash (the file changed) is recomputed,
 /// and its old entry dropped: the file is rewritten, without the stale
-/// entries, into `output` + ".rewrite" and renamed over `output` at the end
-/// (until then `output` keeps its old content), so that a name appears at
+/// entries, into the file + ".rewrite" and renamed over it at the end
+/// (until then the file keeps its old content), so that a name appears at
 /// most once in a collection file and readers need no rule for duplicates.
+/// Given `classes`, resume relabels every kept entry with them (also by a
+/// rewrite); without, it keeps the file's classes for the new entries.
 /// Entries of meshes that are no longer among the inputs are kept. Resuming
 /// a file analysed with other analysis options throws Error before any work,
 /// naming the file and each differing option with both values.
-/// Throws InvalidArgument on bad options and Error from the writer (the file
-/// cannot be created or written).
+/// Throws InvalidArgument on bad options, outputs or classes, and Error from
+/// the lock or the writer (the file cannot be created or written: the
+/// message then says which file holds the entries of the last checkpoint).
 ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const std::vector<PsbClass>& classes,
                                      const std::filesystem::path& output, const ExtractionOptions& options = {});
 

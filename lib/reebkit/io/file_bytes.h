@@ -1,10 +1,13 @@
-// Whole-file reads and writes shared by every mesh format: a reader gets the
-// file's bytes in one piece, a writer hands over one finished buffer.
+// Whole-file reads and writes shared by every format: a reader gets the
+// file's bytes in one piece, a writer hands over one finished buffer, which
+// replaces the file atomically (temporary file beside it, rename), so that a
+// failed write never leaves a partial file nor touches the previous one.
 #pragma once
 
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace reebkit {
 
@@ -12,8 +15,20 @@ namespace reebkit {
 /// Throws MeshFileError when the file is missing, is not a regular file or cannot be read.
 std::string read_file_bytes(const std::filesystem::path& path);
 
-/// Replaces the contents of `path` by `bytes`.
-/// Throws MeshFileError when the file cannot be created or written.
+/// Replaces the contents of `path` by `bytes`, atomically: the bytes go to a
+/// new file in the same folder (`.NAME.tmp-PID-N`), every write checked,
+/// fsync'd and closed, then renamed over `path`. On any failure the
+/// temporary file is removed and `path` is left as it was. An existing
+/// `path` that is a device or a pipe (/dev/null, /dev/stdout, a FIFO) is
+/// written to in place, never replaced.
+/// Throws MeshFileError naming `path` and the reason (e.g. "No space left on device").
 void write_file_bytes(const std::filesystem::path& path, std::string_view bytes);
+
+/// Checks, before any work, that `path` can be written as an output file:
+/// not empty, not a folder, none of `inputs` (same file, by path or by
+/// link), and its folder exists and is writable (a device or a pipe: it is
+/// writable itself). Throws InvalidArgument
+/// naming `path` and the problem.
+void check_output_file(const std::filesystem::path& path, const std::vector<std::filesystem::path>& inputs = {});
 
 }  // namespace reebkit

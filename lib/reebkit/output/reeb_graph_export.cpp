@@ -1,6 +1,7 @@
 #include "reebkit/output/reeb_graph_export.h"
 
 #include "reebkit/core/error.h"
+#include "reebkit/io/file_bytes.h"
 #include "reebkit/io/json_writer.h"
 #include "reebkit/io/ply.h"
 #include "reebkit/mesh/hole_filling.h"
@@ -8,7 +9,7 @@
 #include "reebkit/output/obj_lines.h"
 #include "reebkit/pipeline/mesh_record.h"
 
-#include <fstream>
+#include <sstream>
 #include <string>
 
 namespace reebkit {
@@ -31,16 +32,6 @@ std::vector<Index> node_offsets(const std::vector<MeshAnalysis>& components) {
     next += r.reeb.num_nodes();
   }
   return offset;
-}
-
-std::ofstream open_for_writing(const std::filesystem::path& path) {
-  std::ofstream out(path);
-  if (!out) throw Error(path.string() + ": cannot open for writing");
-  return out;
-}
-
-void check_written(const std::ofstream& out, const std::filesystem::path& path) {
-  if (!out) throw Error(path.string() + ": write failed");
 }
 
 }  // namespace
@@ -151,9 +142,9 @@ void write_reeb_graph_json(const std::filesystem::path& path, const std::vector<
   check_components("write_reeb_graph_json", components);
   std::vector<GraphRecord> entries;
   for (const MeshAnalysis& r : components) entries.push_back(make_graph_record(r, compute_attributes(r)));
-  std::ofstream out = open_for_writing(path);
+  std::ostringstream out;
   write_reeb_graph_json(out, components.front().mesh.source, entries);
-  check_written(out, path);
+  write_file_bytes(path, out.str());
 }
 
 void write_segmentation_ply(const std::filesystem::path& path, const std::vector<MeshAnalysis>& components) {
@@ -197,7 +188,7 @@ void write_segmentation_ply(const std::filesystem::path& path, const std::vector
 
 void write_skeleton_obj(const std::filesystem::path& path, const std::vector<MeshAnalysis>& components) {
   check_components("write_skeleton_obj", components);
-  std::ofstream out = open_for_writing(path);
+  std::ostringstream out;
   ObjLinesWriter obj(out);
   obj.comment("reebkit: dual Reeb graph (nodes at their barycenters) and topological skeleton of " +
               components.front().mesh.source);
@@ -218,7 +209,7 @@ void write_skeleton_obj(const std::filesystem::path& path, const std::vector<Mes
     for (const auto& [a, b] : r.reeb.edges)
       obj.line({polyline[static_cast<std::size_t>(a)].back(), polyline[static_cast<std::size_t>(b)].front()});
   }
-  check_written(out, path);
+  write_file_bytes(path, out.str());
 }
 
 }  // namespace reebkit

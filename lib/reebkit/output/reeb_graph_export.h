@@ -28,8 +28,9 @@ namespace reebkit {
 /// `mesh` field. Throws InvalidArgument when `components` is empty or a
 /// component is a failed entry.
 void write_reeb_graph_json(std::ostream& out, const std::string& mesh, const std::vector<GraphRecord>& components);
-/// The same from the analyses (with compute_attributes), into the file `path`.
-/// Throws as above, and Error naming the file when it cannot be written.
+/// The same from the analyses (with compute_attributes), into the file `path`
+/// (write_file_bytes: atomically). Throws as above, and MeshFileError naming
+/// the file when it cannot be written.
 void write_reeb_graph_json(const std::filesystem::path& path, const std::vector<MeshAnalysis>& components);
 
 /// The mesh colored by segment (category_color of the node id), with the

@@ -3,6 +3,7 @@
 #include "reebkit/core/error.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <type_traits>
 
@@ -32,9 +33,25 @@ void from_value(const OptionValue& value, T& x, const std::string& name) {
   x = static_cast<T>(v);
 }
 
-/// The row of the option `member` of the part `group` of AnalysisOptions.
+/// The values a numeric option may take: [lowest, highest], or (lowest,
+/// highest] when `above_lowest`.
+struct Range {
+  double lowest = -std::numeric_limits<double>::infinity();
+  double highest = std::numeric_limits<double>::infinity();
+  bool above_lowest = false;
+
+  bool holds(double x) const { return (above_lowest ? x > lowest : x >= lowest) && x <= highest; }
+  std::string text() const {
+    const auto bound = [](double x) { return std::isinf(x) ? std::string("inf") : option_text(x); };
+    return (above_lowest ? "(" : "[") + bound(lowest) + ", " + bound(highest) + (std::isinf(highest) ? ")" : "]");
+  }
+};
+
+/// The row of the option `member` of the part `group` of AnalysisOptions,
+/// whose values lie in `range` (a text option: any its parser accepts).
 template <typename Group, typename T>
-AnalysisOptionField field(const char* name, const char* help, Group AnalysisOptions::*group, T Group::*member) {
+AnalysisOptionField field(const char* name, const char* help, Group AnalysisOptions::*group, T Group::*member,
+                          Range range = {}) {
   return {name, help, [=](const AnalysisOptions& o) { return to_value((o.*group).*member); },
           [=, name = std::string(name)](AnalysisOptions& o, const OptionValue& value) {
             const OptionValue kind = to_value(T{});
@@ -42,6 +59,14 @@ AnalysisOptionField field(const char* name, const char* help, Group AnalysisOpti
               throw InvalidArgument("analysis option " + name + ": expected " + option_kind(kind) + ", got " +
                                     option_kind(value) + " '" + option_text(value) + "'");
             from_value(value, (o.*group).*member, name);
+          },
+          [=, name = std::string(name)](const AnalysisOptions& o) {
+            if constexpr (std::is_arithmetic_v<T>) {
+              const T value = (o.*group).*member;
+              if (!range.holds(static_cast<double>(value)))
+                throw InvalidArgument("analysis option " + name + ": " + option_text(to_value(value)) +
+                                      " is out of its range " + range.text());
+            }
           }};
 }
 
@@ -51,27 +76,31 @@ const std::vector<AnalysisOptionField>& analysis_option_fields() {
   using A = AnalysisOptions;
   static const std::vector<AnalysisOptionField> fields = {
       field("max_hole_loop", "close each boundary loop no longer than this fraction of sqrt(surface area) before "
-            "the analysis (0: keep every hole)", &A::holes, &HoleFillingOptions::max_loop_length),
+            "the analysis (0: keep every hole)", &A::holes, &HoleFillingOptions::max_loop_length, Range{0}),
       field("epsilon", "relaxation radius of the extrema intersection, eq. (6) (fraction of the geodesic diameter)",
-            &A::features, &FeatureOptions::epsilon),
+            &A::features, &FeatureOptions::epsilon, Range{0, 1, true}),
       field("geodesic", "geodesic distances: dijkstra (shortest edge paths) or fmm (fast marching across the "
             "triangles, less sensitive to the sampling)", &A::features, &FeatureOptions::geodesic),
       field("min_persistence", "drop the extrema of f1 and f2 whose topological persistence is below this "
             "fraction of the geodesic diameter before the relaxed intersection (0: every local extremum, as the "
-            "paper)", &A::features, &FeatureOptions::min_persistence),
+            "paper)", &A::features, &FeatureOptions::min_persistence, Range{0, 1}),
       field("start_vertex", "start vertex v_r of the diameter search, eq. (2) (index in the cleaned mesh)",
-            &A::features, &FeatureOptions::start_vertex),
+            &A::features, &FeatureOptions::start_vertex, Range{0}),
       field("max_extra_sweeps", "extra passes per diameter sweep at most (0: the paper's single double sweep)",
-            &A::features, &FeatureOptions::max_extra_sweeps),
+            &A::features, &FeatureOptions::max_extra_sweeps, Range{0}),
       field("extra_seeds", "further diameter sweeps from farthest-point seeds", &A::features,
-            &FeatureOptions::extra_seeds),
+            &FeatureOptions::extra_seeds, Range{0}),
       field("level_lines", "what a level line is: contour (the connected curves of the propagation front, exact "
             "topology) or paper (Definition 6: connected sets of candidate vertices)", &A::reeb,
             &ReebOptions::level_lines),
       field("skeleton_levels", "levels of f the skeleton is thinned to (a point per level a line absorbs)",
-            &A::reeb, &ReebOptions::skeleton_levels),
+            &A::reeb, &ReebOptions::skeleton_levels, Range{1}),
   };
   return fields;
+}
+
+void check_analysis_options(const AnalysisOptions& options) {
+  for (const AnalysisOptionField& f : analysis_option_fields()) f.check(options);
 }
 
 std::vector<NamedOption> named_analysis_options(const AnalysisOptions& options) {

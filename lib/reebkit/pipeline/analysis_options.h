@@ -28,10 +28,17 @@ struct AnalysisOptionField {
   /// is of another kind or out of the option's type's range, and the
   /// option's own error for a text it does not know (e.g. parse_geodesic).
   std::function<void(AnalysisOptions& options, const OptionValue& value)> set;
+  /// Throws InvalidArgument naming the option, its value and its range when
+  /// its value in `options` is out of that range (the steps check again).
+  std::function<void(const AnalysisOptions& options)> check;
 };
 
 /// Every analysis option, in the order --help and `reeb info` list them.
 const std::vector<AnalysisOptionField>& analysis_option_fields();
+
+/// Checks every option's range (AnalysisOptionField::check), so that a
+/// collection is refused before any mesh is read rather than failing every mesh.
+void check_analysis_options(const AnalysisOptions& options);
 
 /// `options` by name, in table order.
 std::vector<NamedOption> named_analysis_options(const AnalysisOptions& options);

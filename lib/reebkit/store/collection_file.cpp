@@ -28,8 +28,11 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <ctime>
 #include <limits>
 #include <unordered_map>
@@ -66,13 +69,63 @@ H5::StrType utf8_string_type() {
   throw Error(path.string() + ": " + problem);
 }
 
-/// Runs `body`, turning HDF5's exceptions into an Error naming the file.
+/// Whether a failure also prints HDF5's error stack (print_hdf5_error_stacks).
+std::atomic<bool> print_error_stacks{false};
+
+/// The system's reason for the first HDF5 failure in a guarded() call (e.g.
+/// "No space left on device"), as its error stack recorded it when it
+/// failed; "" when none.
+/// Taken then, because the C++ wrappers' destructors make HDF5 calls that
+/// clear the stack before a caller sees the exception.
+thread_local std::string last_system_reason;
+
+herr_t on_hdf5_failure(hid_t stack, void*) {
+  if (print_error_stacks) H5Eprint2(stack, stderr);
+  H5Ewalk2(
+      stack, H5E_WALK_DOWNWARD,
+      [](unsigned, const H5E_error2_t* error, void*) -> herr_t {
+        const std::string description = error->desc != nullptr ? error->desc : "";
+        const std::string marker = "error message = '";
+        const auto at = description.find(marker);
+        if (at != std::string::npos && last_system_reason.empty())
+          last_system_reason =
+              description.substr(at + marker.size(), description.find('\'', at + marker.size()) - at - marker.size());
+        return 0;
+      },
+      nullptr);
+  return 0;
+}
+
+/// While alive, HDF5 calls on_hdf5_failure when a call fails (instead of
+/// nothing: the library is kept quiet otherwise, H5::Exception::dontPrint,
+/// also when it cannot close a damaged file at exit).
+class FailureWatch {
+ public:
+  FailureWatch() {
+    H5Eget_auto2(H5E_DEFAULT, &previous_, &previous_data_);
+    H5Eset_auto2(H5E_DEFAULT, on_hdf5_failure, nullptr);
+    last_system_reason.clear();
+  }
+  ~FailureWatch() { H5Eset_auto2(H5E_DEFAULT, previous_, previous_data_); }
+  FailureWatch(const FailureWatch&) = delete;
+  FailureWatch& operator=(const FailureWatch&) = delete;
+
+ private:
+  H5E_auto2_t previous_ = nullptr;
+  void* previous_data_ = nullptr;
+};
+
+/// Runs `body`, turning HDF5's exceptions into one Error naming the file,
+/// what was being done and the system's reason when there is one.
 template <typename Body>
 auto guarded(const fs::path& path, const char* doing, Body&& body) {
+  const FailureWatch watch;
   try {
     return body();
   } catch (const H5::Exception& e) {
-    fail(path, std::string(doing) + ": HDF5: " + e.getFuncName() + ": " + e.getDetailMsg());
+    const std::string reason = last_system_reason;
+    const std::string hdf5 = "HDF5: " + e.getFuncName() + ": " + e.getDetailMsg();
+    fail(path, std::string(doing) + ": " + (reason.empty() ? hdf5 : reason + " (" + hdf5 + ")"));
   }
 }
 
@@ -422,7 +475,7 @@ int vfd_descriptor(const H5::H5File& file) {
 /// Flushes HDF5's caches to the file and the file to the disk.
 void flush_to_disk(const H5::H5File& file, const fs::path& path) {
   file.flush(H5F_SCOPE_LOCAL);
-  if (::fsync(vfd_descriptor(file)) != 0) fail(path, "fsync failed");
+  if (::fsync(vfd_descriptor(file)) != 0) fail(path, std::string("fsync failed: ") + std::strerror(errno));
 }
 
 /// The committed part of a collection file: per-mesh columns and offsets.
@@ -569,6 +622,8 @@ std::vector<GraphRecord> read_entries(const Tables& t, const Snapshot& s, std::i
 
 }  // namespace
 
+void print_hdf5_error_stacks(bool on) { print_error_stacks = on; }
+
 // ---------------------------------------------------------------------------
 // Reader
 
@@ -635,7 +690,43 @@ struct CollectionWriter::Impl {
   void create(const fs::path& target, const Provenance& provenance);
   void write_batch();
   void commit();
+  /// Runs the write step `body` (guarded); on failure abandons the file and rethrows.
+  template <typename Body>
+  void write_step(const fs::path& target, const char* doing, Body&& body) {
+    try {
+      guarded(target, doing, body);
+    } catch (...) {
+      abandon();
+      throw;
+    }
+  }
+  /// Lets go of a file that failed to be written, leaving it as its last
+  /// checkpoint left it. HDF5 would retry the failed writes when closing
+  /// it, fail again (and HDF5 1.10 crashes at exit on a file it could not
+  /// close), so the file's descriptor is first pointed at /dev/null: the
+  /// writes still pending go nowhere and every handle closes.
+  void abandon() noexcept;
 };
+
+void CollectionWriter::Impl::abandon() noexcept {
+  if (file.getId() == H5I_INVALID_HID) return;
+  void* handle = nullptr;
+  if (H5Fget_vfd_handle(file.getId(), H5P_DEFAULT, &handle) >= 0 && handle != nullptr) {
+    const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+    if (null >= 0) {
+      ::dup2(null, *static_cast<int*>(handle));
+      ::close(null);
+    }
+  }
+  try {
+    tables = Tables{};
+    file.close();
+  } catch (const H5::Exception&) {
+    // nothing more can be done: the file on disk is as the last checkpoint left it
+  }
+  batch = Batch{};
+  buffered = 0;
+}
 
 namespace {
 
@@ -752,15 +843,15 @@ CollectionWriter::CollectionWriter(const fs::path& path, const Provenance& prove
   Impl& w = *impl_;
   w.path = path;
   if (!resume || !fs::exists(path)) {
-    guarded(path, "creating", [&] { w.create(path, provenance); });
+    w.write_step(path, "creating", [&] { w.create(path, provenance); });
     return;
   }
   // Resume: copy the committed entries into a fresh file, then put it in place.
   fs::path temporary = path;
   temporary += ".resume-tmp";
-  {
+  try {
     const OpenCollection old = open_collection(path);
-    guarded(temporary, "creating", [&] { w.create(temporary, provenance); });
+    w.write_step(temporary, "creating", [&] { w.create(temporary, provenance); });
     const std::int64_t n = old.snapshot.size;
     for (std::int64_t first = 0; first < n; first += static_cast<std::int64_t>(kBatchEntries)) {
       const std::int64_t count = std::min<std::int64_t>(static_cast<std::int64_t>(kBatchEntries), n - first);
@@ -770,7 +861,12 @@ CollectionWriter::CollectionWriter(const fs::path& path, const Provenance& prove
         append(std::move(e));
       }
     }
-    guarded(temporary, "writing", [&] { w.commit(); });
+    w.write_step(temporary, "writing", [&] { w.commit(); });
+  } catch (...) {
+    w.abandon();
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    throw;
   }
   std::error_code error;
   fs::rename(temporary, path, error);
@@ -793,7 +889,8 @@ std::int64_t CollectionWriter::size() const { return impl_->written + impl_->buf
 
 void CollectionWriter::append(GraphRecord entry) {
   Impl& w = *impl_;
-  if (w.file.getId() == H5I_INVALID_HID) throw InvalidArgument(w.path.string() + ": append after close()");
+  if (w.file.getId() == H5I_INVALID_HID)
+    throw InvalidArgument(w.path.string() + ": append after close() or a failed write");
   check_entry(entry, w.path);
   Batch& b = w.batch;
   const std::int64_t n = entry.num_nodes();
@@ -824,18 +921,22 @@ void CollectionWriter::append(GraphRecord entry) {
   b.node_offset.push_back(w.nodes);
   b.edge_offset.push_back(w.edges);
   b.feature_offset.push_back(w.features);
-  if (++w.buffered >= static_cast<std::int64_t>(kBatchEntries)) guarded(w.path, "writing", [&] { w.write_batch(); });
+  if (++w.buffered >= static_cast<std::int64_t>(kBatchEntries))
+    w.write_step(w.path, "writing", [&] { w.write_batch(); });
 }
 
 void CollectionWriter::checkpoint() {
-  guarded(impl_->path, "writing", [&] { impl_->commit(); });
+  Impl& w = *impl_;
+  if (w.file.getId() == H5I_INVALID_HID)
+    throw InvalidArgument(w.path.string() + ": checkpoint after close() or a failed write");
+  w.write_step(w.path, "writing", [&] { w.commit(); });
 }
 
 void CollectionWriter::close() {
   Impl& w = *impl_;
   if (w.file.getId() == H5I_INVALID_HID) return;
   checkpoint();
-  guarded(w.path, "closing", [&] {
+  w.write_step(w.path, "closing", [&] {
     w.tables = Tables{};
     w.file.close();
   });

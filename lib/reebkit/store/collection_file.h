@@ -64,6 +64,9 @@ class CollectionWriter {
   void checkpoint();
   /// Checkpoints and closes; throws on failure.
   void close();
+  // A write that fails (disk full, file size limit, I/O error) throws one
+  // Error naming the file and the system's reason, and closes the writer:
+  // the file keeps the entries of its last checkpoint, later calls throw.
   /// Entries written or buffered so far (existing ones included).
   std::int64_t size() const;
 
@@ -71,6 +74,10 @@ class CollectionWriter {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+/// Whether an HDF5 failure also prints HDF5's own error stack to stderr
+/// (`reeb --verbose`); off by default: the Error's message says it all.
+void print_hdf5_error_stacks(bool on);
 
 /// Reads a collection file.
 class CollectionReader {
