@@ -7,6 +7,9 @@
 #include "reebkit/mesh/load_mesh.h"
 #include "reebkit/pipeline/analysis_options.h"
 
+#include <pybind11/stl/filesystem.h>
+
+#include <filesystem>
 #include <limits>
 
 namespace reebkit::python {
@@ -32,7 +35,7 @@ void bind_mesh(py::module_& m) {
 
   m.def(
       "load_mesh",
-      [](const std::string& path) {
+      [](const std::filesystem::path& path) {
         CleanedMesh cleaned;
         {
           const py::gil_scoped_release release;

@@ -68,7 +68,7 @@ std::string analysis_options_doc() {
 
 void bind_errors(py::module_& m) {
   // Derived classes registered last: pybind11 tries the latest translator first.
-  static py::exception<Error> error(m, "Error", PyExc_RuntimeError);
+  auto& error = py::register_exception<Error>(m, "Error", PyExc_RuntimeError);
   error.doc() = "Base class of every error reebkit raises; the message names the file and the problem.";
   py::register_exception<MeshFileError>(m, "MeshFileError", error).doc() =
       "A mesh file that cannot be opened or parsed: '<file>:<line>: <problem>'.";
