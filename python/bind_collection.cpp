@@ -38,10 +38,10 @@ std::int64_t entry_index(const Collection& c, const std::string& name) {
   throw py::key_error(c.path + ": no mesh named '" + name + "'");
 }
 
-/// The query's graph: a ReebGraph; a mesh (V, F) or a mesh file analysed with
-/// the collection's options, as `reeb query` analyses a file; or an entry's name.
+/// The graph of a query that is not a ReebGraph: a mesh (V, F) or a mesh
+/// file analysed with the collection's options, as `reeb query` analyses a
+/// file, or an entry's name.
 GraphRecord query_record(const Collection& c, const py::object& query) {
-  if (py::isinstance<ArrayGraph>(query)) return query.cast<const ArrayGraph&>().record;
   if (py::isinstance<py::tuple>(query)) {
     const auto vf = query.cast<py::tuple>();
     if (vf.size() != 2) throw py::value_error("a query mesh is a tuple (V, F)");
@@ -141,7 +141,9 @@ void bind_collection(py::module_& m) {
           "query",
           [](Collection& c, const py::object& query, int k, int candidates, int threads,
              const MatchingOptions& matching) {
-            const GraphRecord record = query_record(c, query);
+            const bool graph = py::isinstance<ArrayGraph>(query);
+            const GraphRecord computed = graph ? GraphRecord() : query_record(c, query);
+            const GraphRecord& record = graph ? query.cast<const ArrayGraph&>().record : computed;
             QueryOptions options;
             options.k = k;
             options.candidates = candidates;
