@@ -31,6 +31,20 @@ py::array_t<T> columns(const std::vector<T>& table, int width, int first, int co
   return view_array(table.data() + first, {rows, static_cast<py::ssize_t>(count)}, row_strides<T>(width), owner);
 }
 
+/// A vector, viewed as a 1-D array.
+template <typename T>
+py::array_t<T> vector_view(const std::vector<T>& values, py::handle owner) {
+  return view_array(values.data(), {static_cast<py::ssize_t>(values.size())}, {sizeof(T)}, owner);
+}
+
+/// A per-vertex array of an ArrayGraph, viewed; None for a collection entry (empty).
+template <typename T>
+py::object per_vertex(std::vector<T> ArrayGraph::*member, py::handle self) {
+  const std::vector<T>& values = self.cast<const ArrayGraph&>().*member;
+  if (values.empty()) return py::none();
+  return vector_view(values, self);
+}
+
 template <std::size_t N>
 py::list names(const std::array<const char*, N>& names) {
   py::list out;
@@ -94,17 +108,11 @@ void bind_graph(py::module_& m) {
           "(e, 2) float64: the edge attributes, columns EDGE_ATTRIBUTES")
       .def_property_readonly(
           "signature",
-          [](py::object self) {
-            const auto& s = record_of(self).signature;
-            return view_array(s.data(), {static_cast<py::ssize_t>(s.size())}, {sizeof(double)}, self);
-          },
+          [](py::object self) { return vector_view(record_of(self).signature, self); },
           "(48,) float64: the fixed-length signature of the query pre-filter, entries SIGNATURE")
       .def_property_readonly(
           "feature_points",
-          [](py::object self) {
-            const auto& f = record_of(self).feature_points;
-            return view_array(f.data(), {static_cast<py::ssize_t>(f.size())}, {sizeof(std::int32_t)}, self);
-          },
+          [](py::object self) { return vector_view(record_of(self).feature_points, self); },
           "(p,) int32: the feature points (vertex ids), in selection order")
       .def_property_readonly(
           "skeleton",
@@ -121,20 +129,12 @@ void bind_graph(py::module_& m) {
           "list of (s_i, 3) float64 arrays: each node's part of the topological skeleton")
       .def_property_readonly(
           "vertex_node",
-          [](py::object self) -> py::object {
-            const auto& v = self.cast<const ArrayGraph&>().vertex_node;
-            if (v.empty()) return py::none();
-            return view_array(v.data(), {static_cast<py::ssize_t>(v.size())}, {sizeof(Index)}, self);
-          },
+          [](py::object self) { return per_vertex(&ArrayGraph::vertex_node, self); },
           "(n,) int32: the node of each vertex (the segmentation), -1 for a vertex left out by cleaning; "
           "None for a collection entry")
       .def_property_readonly(
           "fq",
-          [](py::object self) -> py::object {
-            const auto& v = self.cast<const ArrayGraph&>().fq;
-            if (v.empty()) return py::none();
-            return view_array(v.data(), {static_cast<py::ssize_t>(v.size())}, {sizeof(double)}, self);
-          },
+          [](py::object self) { return per_vertex(&ArrayGraph::fq, self); },
           "(n,) float64: the quotient function f_q the graph was built from, NaN for a vertex left out; None for "
           "a collection entry")
       .def_property_readonly("cycles", [](const ArrayGraph& g) { return independent_cycles(g.record); },

@@ -16,11 +16,16 @@ namespace reebkit::python {
 
 namespace {
 
-/// analyze_mesh up to f_q (AnalysisOptions::reeb_graph = false), as `reeb features` runs it.
-MeshAnalysis features_and_fq(const ArrayMesh& m, AnalysisOptions options) {
+/// The mesh V, F and its analysis up to f_q (AnalysisOptions::reeb_graph =
+/// false) with the options given as keyword arguments, as `reeb features` runs it.
+std::pair<ArrayMesh, MeshAnalysis> features_and_fq(const PointsArray& V, const IndexArray& F,
+                                                   const py::kwargs& kwargs) {
+  AnalysisOptions options = analysis_options(kwargs);
   options.reeb_graph = false;
+  ArrayMesh mesh = mesh_argument(V, F);
   const py::gil_scoped_release release;
-  return analyze_mesh(m.mesh, options);
+  MeshAnalysis analysis = analyze_mesh(mesh.mesh, options);
+  return {std::move(mesh), std::move(analysis)};
 }
 
 py::object option_object(const OptionValue& value) {
@@ -57,9 +62,7 @@ void bind_mesh(py::module_& m) {
   m.def(
       "features",
       [](const PointsArray& V, const IndexArray& F, const py::kwargs& kwargs) {
-        const AnalysisOptions options = analysis_options(kwargs);
-        const ArrayMesh mesh = mesh_argument(V, F);
-        const MeshAnalysis analysis = features_and_fq(mesh, options);
+        const auto [mesh, analysis] = features_and_fq(V, F, kwargs);
         std::vector<Index> rows;
         for (const Index v : analysis.features.vertices) rows.push_back(analysis.mesh.source_index(v));
         const auto k = static_cast<py::ssize_t>(rows.size());
@@ -74,9 +77,7 @@ void bind_mesh(py::module_& m) {
   m.def(
       "quotient_function",
       [](const PointsArray& V, const IndexArray& F, const py::kwargs& kwargs) {
-        const AnalysisOptions options = analysis_options(kwargs);
-        const ArrayMesh mesh = mesh_argument(V, F);
-        const MeshAnalysis analysis = features_and_fq(mesh, options);
+        const auto [mesh, analysis] = features_and_fq(V, F, kwargs);
         return owning_array(to_input_numbering(analysis.mesh, mesh.input_vertices, analysis.fq.value,
                                                std::numeric_limits<double>::quiet_NaN()),
                             {static_cast<py::ssize_t>(mesh.input_vertices)});

@@ -1,7 +1,10 @@
 """The Python module against the command line: the same graphs, the same
 errors, the same collection; evaluate against hand-computed measures."""
+import concurrent.futures
 import json
 import math
+import threading
+import time
 import warnings
 
 import numpy as np
@@ -236,3 +239,43 @@ def test_to_networkx():
     assert sorted(map(tuple, n.edges)) == [tuple(e) for e in g.edges.tolist()]
     assert n.nodes[0]["type"] == "root"
     assert networkx.number_connected_components(n) == 1 and g.cycles == 2
+
+
+def torus(major, minor):
+    """A torus of major x minor vertices (genus 1) as V, F."""
+    u, v = np.meshgrid(np.linspace(0, 2 * np.pi, major, endpoint=False),
+                       np.linspace(0, 2 * np.pi, minor, endpoint=False), indexing="ij")
+    V = np.stack([(1 + 0.35 * np.cos(v)) * np.cos(u), (1 + 0.35 * np.cos(v)) * np.sin(u), 0.35 * np.sin(v)], axis=-1)
+    i, j = np.meshgrid(np.arange(major), np.arange(minor), indexing="ij")
+    a, b = i * minor + j, ((i + 1) % major) * minor + j
+    c, d = ((i + 1) % major) * minor + (j + 1) % minor, i * minor + (j + 1) % minor
+    F = np.concatenate([np.stack([a, b, c], -1).reshape(-1, 3), np.stack([a, c, d], -1).reshape(-1, 3)])
+    return V.reshape(-1, 3), F.astype(np.int32)
+
+
+def test_the_gil_is_released_during_a_call():
+    V, F = torus(200, 100)
+    assert reebkit.reeb_graph(V, F).cycles == 1
+    done, span = threading.Event(), []
+
+    def work():
+        start = time.perf_counter()
+        reebkit.reeb_graph(V, F)
+        span.append(time.perf_counter() - start)
+        done.set()
+
+    worker = threading.Thread(target=work)
+    ticks = [time.perf_counter()]
+    worker.start()
+    while not done.is_set():  # this thread runs on while the call computes
+        ticks.append(time.perf_counter())
+    worker.join()
+    assert max(np.diff(ticks)) < span[0] / 2, (max(np.diff(ticks)), span[0])
+
+
+def test_threads_give_the_serial_results():
+    meshes = [reebkit.load_mesh(DATASETS / m) for m in MESHES]
+    serial = [reebkit.reeb_graph(V, F).edges.tolist() for V, F in meshes]
+    with concurrent.futures.ThreadPoolExecutor(2) as pool:
+        parallel = list(pool.map(lambda vf: reebkit.reeb_graph(*vf).edges.tolist(), meshes))
+    assert parallel == serial
