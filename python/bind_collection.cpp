@@ -170,7 +170,7 @@ void bind_collection(py::module_& m) {
           },
           py::arg("query"), py::arg("k") = query_defaults.k, py::arg("candidates") = query_defaults.candidates,
           py::arg("threads") = query_defaults.threads, py::arg("matching") = MatchingOptions(),
-          "query(query, k=10, candidates=100, threads=1, matching=MatchingOptions()) -> list of dict\n\n"
+          "Returns a list of dict (defaults: QueryOptions, as `reeb query --help`).\n\n"
           "The k entries nearest to `query` (`reeb query`): a ReebGraph, a mesh (V, F), an entry's name or a "
           "mesh file (both analysed with the collection's analysis options). Each result: rank, name, class, "
           "distance, signature_distance, index. The collection is read into memory on the first query.")
@@ -186,7 +186,7 @@ void bind_collection(py::module_& m) {
             return owning_array(std::move(d.values), {n, n});
           },
           py::arg("threads") = AllPairsOptions{}.threads, py::arg("matching") = MatchingOptions(),
-          "distances(threads=0, matching=MatchingOptions()) -> (N, N) float64\n\n"
+          "Returns an (N, N) float64 array (defaults: AllPairsOptions, as `reeb distances --help`).\n\n"
           "Graph-matching distances of every pair of entries (`reeb distances`), rows and columns in collection "
           "order (names, classes); threads=0: as many as OpenMP offers.")
       .def("__repr__", [](const Collection& c) {

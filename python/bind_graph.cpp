@@ -180,7 +180,15 @@ void bind_graph(py::module_& m) {
       .def_readwrite("global_shape_weight", &MatchingOptions::global_shape_weight)
       .def_readwrite("unmatched_cost", &MatchingOptions::unmatched_cost)
       .def_readwrite("min_node_weight", &MatchingOptions::min_node_weight)
-      .def_readwrite("refine_rounds", &MatchingOptions::refine_rounds);
+      .def_readwrite("refine_rounds", &MatchingOptions::refine_rounds)
+      .def("__repr__", [](py::object self) {
+        std::string fields;
+        for (const auto& [name, member] : py::type::of(self).attr("__dict__").cast<py::dict>())
+          if (py::isinstance(member, py::module_::import("builtins").attr("property")))
+            fields += (fields.empty() ? "" : ", ") + std::string(py::str(name)) + "=" +
+                      std::string(py::repr(self.attr(name)));
+        return "MatchingOptions(" + fields + ")";
+      });
 
   m.def(
       "match",
@@ -194,7 +202,7 @@ void bind_graph(py::module_& m) {
         return py::make_tuple(match.distance, owning_array(std::move(match.correspondence), {k}));
       },
       py::arg("g1"), py::arg("g2"), py::arg("matching") = MatchingOptions(),
-      "match(g1, g2, matching=MatchingOptions()) -> (distance, correspondence)\n\n"
+      "Returns (distance, correspondence).\n\n"
       "The graph-matching distance of two ReebGraphs (as `reeb match`) and, for each node of g1, the node of g2 "
       "it is matched to: (k1,) int32, -1 for a deleted node.");
 }

@@ -107,7 +107,7 @@ void bind_mesh(py::module_& m) {
       },
       py::arg("V"), py::arg("F"), py::arg("sources"),
       py::arg("method") = std::string(geodesic_name(FeatureOptions{}.geodesic)),
-      "geodesic_distance(V, F, sources, method='dijkstra') -> (n,) float64\n\n"
+      "Returns an (n,) float64 array (default method: FeatureOptions::geodesic, as `--geodesic`).\n\n"
       "Geodesic distance of every vertex to the nearest of `sources` (a row of V or a 1-D array of them): "
       "'dijkstra' (shortest edge paths) or 'fmm' (fast marching across the triangles); inf for a vertex "
       "left out by cleaning. V: (n, 3) float64, F: (m, 3) int32.");
