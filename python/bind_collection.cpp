@@ -2,7 +2,6 @@
 // all-pairs distances) and reebkit.evaluate (`reeb eval`'s measures).
 #include "bindings.h"
 
-#include "reebkit/core/error.h"
 #include "reebkit/evaluation/distance_matrix.h"
 #include "reebkit/evaluation/retrieval_metrics.h"
 #include "reebkit/pipeline/analysis_options.h"
@@ -13,6 +12,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 
@@ -130,12 +130,7 @@ void bind_collection(py::module_& m) {
           "(N, 48) float64: every entry's signature (NaN rows for failed entries)")
       .def_property_readonly(
           "analysis_options",
-          [](const Collection& c) {
-            py::dict out;
-            for (const NamedOption& option : named_analysis_options(c.analysis))
-              out[option.name.c_str()] = std::visit([](const auto& v) -> py::object { return py::cast(v); }, option.value);
-            return out;
-          },
+          [](const Collection& c) { return options_dict(c.analysis); },
           "the analysis options the collection was indexed with (query analyses meshes with them)")
       .def(
           "query",

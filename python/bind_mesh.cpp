@@ -5,7 +5,6 @@
 
 #include "reebkit/geodesic/geodesic_solver.h"
 #include "reebkit/mesh/load_mesh.h"
-#include "reebkit/pipeline/analysis_options.h"
 
 #include <pybind11/stl/filesystem.h>
 
@@ -26,10 +25,6 @@ std::pair<ArrayMesh, MeshAnalysis> features_and_fq(const PointsArray& V, const I
   const py::gil_scoped_release release;
   MeshAnalysis analysis = analyze_mesh(mesh.mesh, options);
   return {std::move(mesh), std::move(analysis)};
-}
-
-py::object option_object(const OptionValue& value) {
-  return std::visit([](const auto& v) -> py::object { return py::cast(v); }, value);
 }
 
 }  // namespace
@@ -129,12 +124,7 @@ void bind_mesh(py::module_& m) {
 
   m.def(
       "analysis_options",
-      [] {
-        py::dict out;
-        for (const NamedOption& option : named_analysis_options(AnalysisOptions{}))
-          out[option.name.c_str()] = option_object(option.value);
-        return out;
-      },
+      [] { return options_dict(AnalysisOptions{}); },
       "analysis_options() -> dict: every analysis option with its default (pipeline/analysis_options.h).");
 }
 

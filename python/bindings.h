@@ -55,6 +55,9 @@ void warn(const std::vector<std::string>& warnings);
 /// default). Throws TypeError naming an unknown option.
 AnalysisOptions analysis_options(const py::kwargs& kwargs);
 
+/// `options` by name (the table of pipeline/analysis_options.h), as a dict.
+py::dict options_dict(const AnalysisOptions& options);
+
 /// "name=default: help" for each analysis option, one per line, for docstrings.
 std::string analysis_options_doc();
 

@@ -54,6 +54,13 @@ AnalysisOptions analysis_options(const py::kwargs& kwargs) {
   return options;
 }
 
+py::dict options_dict(const AnalysisOptions& options) {
+  py::dict out;
+  for (const NamedOption& option : named_analysis_options(options))
+    out[option.name.c_str()] = std::visit([](const auto& v) -> py::object { return py::cast(v); }, option.value);
+  return out;
+}
+
 std::string analysis_options_doc() {
   std::string doc;
   const AnalysisOptions defaults;
