@@ -182,7 +182,7 @@ def test_query_equals_reeb_query(collection, reeb):
     c = reebkit.Collection(collection)
     mesh = DATASETS / "elk.off"
     cli = json.loads(reeb("query", collection, mesh, "-k", "5", "--json").stdout)["results"]
-    for query in (mesh, str(mesh), reebkit.load_mesh(mesh), "elk.off"):
+    for query in (mesh, str(mesh), reebkit.load_mesh(mesh), reebkit.reeb_graph(*reebkit.load_mesh(mesh)), "elk.off"):
         results = c.query(query, k=5)
         assert [r["name"] for r in results] == [r["name"] for r in cli]
         assert [r["distance"] for r in results] == pytest.approx([r["distance"] for r in cli], rel=1e-5)
