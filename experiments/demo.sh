@@ -48,6 +48,11 @@ with h5py.File(sys.argv[1], "r", libver="latest", swmr=True) as f:
     nodes = np.diff(f["node_offset"][: n + 1])
     print(f"read back with h5py: {n} graphs, {nodes.sum()} nodes, signatures {f['signature'].shape}")
 PY
+if [ -d "$build/python" ]; then
+  echo "== the same from Python (experiments/python_example.py, docs/python.md)"
+  PYTHONPATH="$build/python" /usr/bin/python3 "$root/experiments/python_example.py" --build "$build" \
+    --collection "$out/collection.h5" -o "$out/python_example.png"
+fi
 echo "== report: $out/report/report.md and $out/report/pr.png"
 echo "== figures: $out/*.graph.png (segments, Reeb graph in red, skeleton in black)"
 echo "            $out/*.fq.png (f_q in viridis, feature points in red)"

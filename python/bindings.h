@@ -1,0 +1,69 @@
+// What the binding files of the module share: numpy arrays that own a moved
+// C++ buffer or view one held by a Python object, the mesh arguments, the
+// analysis options as keyword arguments, and one registration function per
+// file (module.cpp calls them).
+#pragma once
+
+#include "mesh_arrays.h"
+
+#include "reebkit/pipeline/analyze_mesh.h"
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace reebkit::python {
+
+namespace py = pybind11;
+
+/// A numpy array of `shape` that owns `values` (a std::vector or an Eigen
+/// matrix, moved into a capsule: no copy).
+template <typename Container>
+auto owning_array(Container&& values, std::vector<py::ssize_t> shape) {
+  auto* owned = new Container(std::move(values));
+  const py::capsule owner(owned, [](void* p) { delete static_cast<Container*>(p); });
+  using T = std::remove_const_t<std::remove_pointer_t<decltype(owned->data())>>;
+  return py::array_t<T>(std::move(shape), owned->data(), owner);
+}
+
+/// A read-only numpy view of `data` (no copy), which `owner` keeps alive.
+template <typename T>
+py::array_t<T> view_array(const T* data, std::vector<py::ssize_t> shape, std::vector<py::ssize_t> strides,
+                          py::handle owner) {
+  py::array_t<T> out(std::move(shape), std::move(strides), data, owner);
+  out.attr("setflags")(py::arg("write") = false);
+  return out;
+}
+
+/// C-contiguous arrays of the given type (numpy converts, copying, only an
+/// array of another type or layout).
+using PointsArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+using IndexArray = py::array_t<std::int32_t, py::array::c_style | py::array::forcecast>;
+
+/// mesh_from_arrays of V (n, 3) and F (m, 3), with the GIL released; throws
+/// ValueError for other shapes.
+ArrayMesh mesh_argument(const PointsArray& V, const IndexArray& F);
+
+/// Emits each warning of cleaning as a Python RuntimeWarning.
+void warn(const std::vector<std::string>& warnings);
+
+/// The analysis options given as keyword arguments, by the names of the
+/// table of pipeline/analysis_options.h (the others keep the library's
+/// default). Throws TypeError naming an unknown option.
+AnalysisOptions analysis_options(const py::kwargs& kwargs);
+
+/// `options` by name (the table of pipeline/analysis_options.h), as a dict.
+py::dict options_dict(const AnalysisOptions& options);
+
+/// "name=default: help" for each analysis option, one per line, for docstrings.
+std::string analysis_options_doc();
+
+void bind_errors(py::module_& m);
+void bind_graph(py::module_& m);
+void bind_mesh(py::module_& m);
+void bind_collection(py::module_& m);
+
+}  // namespace reebkit::python
