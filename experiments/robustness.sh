@@ -10,7 +10,7 @@
 # report.md and its PNG plots. The measured tables (CSV) are derived from
 # academic-use data: they stay in BUILD_DIR/robustness/ and are never
 # committed. THREADS (default 2) sets the threads; PER_CLASS (default 5) the
-# SHREC07 meshes per class in the sampling section; SIMILARITIES (default 10)
+# SHREC07 meshes per class in the sampling section; SIMILARITIES (default 5)
 # the random similarities per SHREC07 mesh.
 set -euo pipefail
 
@@ -23,7 +23,7 @@ source_dir=$(cd "$(dirname "$0")/.." && pwd)
 report=${2:-$source_dir/results/robustness}
 export OMP_NUM_THREADS=${THREADS:-2}
 per_class=${PER_CLASS:-5}
-similarities=${SIMILARITIES:-10}
+similarities=${SIMILARITIES:-5}
 data=$build/data
 shrec=$data/shrec07_watertight
 cla=$shrec/shrec07_watertight.cla

@@ -115,8 +115,8 @@ def sampling_section(work, report, out):
                "queries the group's originals by graph matching (1 = found first).\n")
     failed = sampling_rows(work, failed=True)
     if failed:
-        out.append(f"{len(failed)} variants could not be analysed and are left out of the tables: "
-                   + ", ".join(sorted({f"{r['mesh']} ({r['kind']} {float(r['strength']):g})" for r in failed}))
+        names = sorted({f"{r['mesh']} ({r['kind']} {float(r['strength']):g})" for r in failed})
+        out.append(f"{len(names)} variants could not be analysed and are left out of the tables: " + ", ".join(names)
                    + " (the decimated mesh fell apart at a thin part; the analysis needs one connected piece).\n")
     out.append("| perturbation | strength | geodesic | variants | forward | backward | forward >= 90 % | same nodes "
                "| same leaves | same cycles | mean distance | rank 1 |")
