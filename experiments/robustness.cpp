@@ -28,6 +28,7 @@
 #include "reebkit/mesh/remeshing.h"
 #include "reebkit/mesh/resampling.h"
 #include "reebkit/mesh/transform.h"
+#include "reebkit/pipeline/analysis_options.h"
 #include "reebkit/pipeline/mesh_record.h"
 
 #include <algorithm>
@@ -50,8 +51,12 @@ namespace fs = std::filesystem;
 constexpr Geodesic kMethods[] = {Geodesic::Dijkstra, Geodesic::FastMarching};
 constexpr double kEpsilon = 0.05;
 
+/// The analysis options every measurement starts from: the defaults, or as
+/// changed by --option NAME=VALUE.
+AnalysisOptions base_options;
+
 AnalysisOptions options_for(Geodesic method) {
-  AnalysisOptions options;
+  AnalysisOptions options = base_options;
   options.features.geodesic = method;
   return options;
 }
@@ -427,18 +432,40 @@ void timing(const fs::path& out, const fs::path& path, const std::vector<Index>&
 
 }  // namespace
 
+/// Sets the analysis option NAME of `text` "NAME=VALUE" in base_options,
+/// VALUE read as the option's kind (integer, number or text).
+void set_base_option(const std::string& text) {
+  const std::size_t eq = text.find('=');
+  const std::string name = text.substr(0, eq);
+  const auto& fields = analysis_option_fields();
+  const auto f = std::find_if(fields.begin(), fields.end(), [&](const AnalysisOptionField& field) { return field.name == name; });
+  if (eq == std::string::npos || f == fields.end()) throw InvalidArgument("--option " + text + ": expected NAME=VALUE, NAME an analysis option");
+  const std::string value = text.substr(eq + 1);
+  const OptionValue kind = f->get(base_options);
+  if (std::holds_alternative<std::int64_t>(kind)) f->set(base_options, static_cast<std::int64_t>(std::stoll(value)));
+  else if (std::holds_alternative<double>(kind)) f->set(base_options, std::stod(value));
+  else f->set(base_options, value);
+  check_analysis_options(base_options);
+}
+
 int main(int argc, char** argv) {
-  const std::vector<std::string> args(argv + 1, argv + argc);
+  std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty()) args.push_back("");
   const auto usage = [] {
-    std::cerr << "usage: robustness rigid OUT_DIR SHREC_DIR CLA [SIMILARITIES]\n"
+    std::cerr << "usage: robustness [--option NAME=VALUE]... SUBCOMMAND ...\n"
+                 "       robustness rigid OUT_DIR SHREC_DIR CLA [SIMILARITIES]\n"
                  "       robustness sampling OUT_DIR GROUP MESH_OR_LIST...\n"
                  "       robustness shrec-sample OUT_DIR SHREC_DIR CLA PER_CLASS\n"
                  "       robustness tosca OUT_DIR TOSCA_DIR\n"
                  "       robustness timing OUT_DIR MESH FACES...\n";
     return 2;
   };
-  if (args.size() < 3) return usage();
   try {
+    while (args.size() >= 2 && args[0] == "--option") {
+      set_base_option(args[1]);
+      args.erase(args.begin(), args.begin() + 2);
+    }
+    if (args.size() < 3) return usage();
     Timer timer;
     const fs::path out = args[1];
     fs::create_directories(out);
