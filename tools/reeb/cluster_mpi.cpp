@@ -1,0 +1,230 @@
+// The MPI side of reeb index and reeb distances (cluster.h). Only this file
+// calls MPI. A process waiting for a message polls and sleeps instead of
+// blocking in MPI: Open MPI's blocking calls spin, and a spinning process
+// takes a core from the workers computing beside it.
+#include "reeb/cluster.h"
+
+#include "reebkit/collection/shard_merge.h"
+#include "reebkit/core/error.h"
+#include "reebkit/core/timer.h"
+#include "reebkit/io/file_lock.h"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <chrono>
+#include <exception>
+#include <iostream>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+
+namespace reebkit::cli {
+namespace {
+
+constexpr int kTagRequest = 1;  // a process asks process 0 for an input
+constexpr int kTagInput = 2;    // process 0's answer: an input index, -1 for none left
+constexpr int kTagBlock = 3;    // a block of distances
+constexpr auto kPoll = std::chrono::microseconds(200);
+/// Values per message (MPI counts are int).
+constexpr std::int64_t kPiece = std::int64_t{1} << 24;
+
+/// Waits for `request` without spinning.
+void wait(MPI_Request& request, MPI_Status* status = MPI_STATUS_IGNORE) {
+  for (int done = 0;;) {
+    MPI_Test(&request, &done, status);
+    if (done) return;
+    std::this_thread::sleep_for(kPoll);
+  }
+}
+
+/// MPI for the life of one command: initialised (threads serialized: a
+/// worker thread asks for inputs) and finalised at the end. A failure on one
+/// process aborts the job: the others may be waiting for it.
+class MpiJob {
+ public:
+  MpiJob() {
+    int provided = 0;
+    MPI_Init_thread(nullptr, nullptr, MPI_THREAD_SERIALIZED, &provided);
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+    MPI_Comm_size(MPI_COMM_WORLD, &size_);
+    if (provided < MPI_THREAD_SERIALIZED)
+      fail("this MPI library does not let threads call it in turn (MPI_THREAD_SERIALIZED)");
+  }
+  ~MpiJob() { MPI_Finalize(); }
+  MpiJob(const MpiJob&) = delete;
+  MpiJob& operator=(const MpiJob&) = delete;
+
+  int rank() const { return rank_; }
+  int size() const { return size_; }
+
+  /// Runs `body`; an exception aborts the whole job.
+  template <typename Body>
+  auto run(Body&& body) {
+    try {
+      return body();
+    } catch (const std::exception& e) {
+      fail(e.what());
+    }
+  }
+
+  [[noreturn]] void fail(const std::string& message) const {
+    std::cerr << "reeb: error (process " << rank_ << " of " << size_ << "): " << message << "\n" << std::flush;
+    MPI_Abort(MPI_COMM_WORLD, 1);
+    std::abort();  // MPI_Abort does not return
+  }
+
+  void barrier() const {
+    MPI_Request request;
+    MPI_Ibarrier(MPI_COMM_WORLD, &request);
+    wait(request);
+  }
+
+  /// Process 0's `value` on every process.
+  int broadcast(int value) const {
+    MPI_Request request;
+    MPI_Ibcast(&value, 1, MPI_INT, 0, MPI_COMM_WORLD, &request);
+    wait(request);
+    return value;
+  }
+
+ private:
+  int rank_ = 0;
+  int size_ = 1;
+};
+
+/// Process 0: answers the other processes' requests for an input with
+/// `take` until each of them was told that none is left.
+void serve_inputs(const InputClaim& take, int others) {
+  while (others > 0) {
+    std::int64_t request = 0;
+    MPI_Request receive;
+    MPI_Irecv(&request, 1, MPI_INT64_T, MPI_ANY_SOURCE, kTagRequest, MPI_COMM_WORLD, &receive);
+    MPI_Status status;
+    wait(receive, &status);
+    const std::optional<std::size_t> input = take();
+    std::int64_t answer = input ? static_cast<std::int64_t>(*input) : -1;
+    MPI_Request send;
+    MPI_Isend(&answer, 1, MPI_INT64_T, status.MPI_SOURCE, kTagInput, MPI_COMM_WORLD, &send);
+    wait(send);
+    if (!input) --others;
+  }
+}
+
+/// Another process than 0: the next input process 0 hands out.
+std::optional<std::size_t> ask_for_input() {
+  std::int64_t request = 0, answer = -1;
+  MPI_Request send, receive;
+  MPI_Irecv(&answer, 1, MPI_INT64_T, 0, kTagInput, MPI_COMM_WORLD, &receive);
+  MPI_Isend(&request, 1, MPI_INT64_T, 0, kTagRequest, MPI_COMM_WORLD, &send);
+  wait(send);
+  wait(receive);
+  if (answer < 0) return std::nullopt;
+  return static_cast<std::size_t>(answer);
+}
+
+/// Pairs in the upper-triangle rows [first, last) of an n x n matrix.
+std::int64_t pairs_in_rows(std::int64_t first, std::int64_t last, std::int64_t n) {
+  const auto before = [n](std::int64_t row) { return row * (n - 1) - row * (row - 1) / 2; };
+  return before(last) - before(first);
+}
+
+}  // namespace
+
+std::optional<ExtractionSummary> extract_collection_on_cluster(const std::vector<MeshInput>& inputs,
+                                                               const std::vector<PsbClass>& classes,
+                                                               const std::filesystem::path& output,
+                                                               const ExtractionOptions& options) {
+  Timer clock;
+  check_extraction(inputs, classes, output, options);  // every process: the same verdict, before MPI starts
+  MpiJob mpi;
+  // Process 0 holds the lock and plans; a refusal (locked, other analysis
+  // options) ends every process cleanly.
+  std::unique_ptr<FileLock> lock;
+  ShardedJob job;
+  std::string refusal;
+  if (mpi.rank() == 0) {
+    try {
+      lock = std::make_unique<FileLock>(output);
+      job = plan_sharded_job(inputs, output, options);
+    } catch (const Error& e) {
+      refusal = e.what();
+    }
+  }
+  if (mpi.broadcast(refusal.empty() ? 1 : 0) == 0) {
+    if (mpi.rank() == 0) throw Error(refusal);
+    return std::nullopt;
+  }
+  ExtractionOptions shard_options = options;
+  shard_options.progress = {};
+  return mpi.run([&]() -> std::optional<ExtractionSummary> {
+    const std::filesystem::path shard = shard_path(output, mpi.rank());
+    if (mpi.rank() != 0) {
+      extract_shard(inputs, classes, shard, ask_for_input, shard_options);
+      mpi.barrier();  // every shard closed
+      return std::nullopt;
+    }
+    std::cerr << "indexing " << job.todo.size() << " meshes on " << mpi.size() << " processes"
+              << (job.skipped > 0 ? " (" + std::to_string(job.skipped) + " already indexed)" : std::string()) << "\n";
+    std::mutex mutex;
+    std::size_t next = 0;
+    const InputClaim take = [&]() -> std::optional<std::size_t> {
+      const std::lock_guard<std::mutex> hold(mutex);
+      if (next == job.todo.size()) return std::nullopt;
+      return job.todo[next++];
+    };
+    std::exception_ptr failure;
+    std::thread compute([&] {
+      try {
+        extract_shard(inputs, classes, shard, take, shard_options);
+      } catch (...) {
+        failure = std::current_exception();
+      }
+    });
+    serve_inputs(take, mpi.size() - 1);
+    compute.join();
+    if (failure) std::rethrow_exception(failure);
+    mpi.barrier();
+    ExtractionSummary summary = merge_shards(inputs, classes, output, job, options);
+    summary.seconds = clock.lap() / 1000;
+    return summary;
+  });
+}
+
+std::optional<PairwiseDistances> all_pairs_on_cluster(const std::vector<GraphRecord>& entries,
+                                                      const AllPairsOptions& options) {
+  MpiJob mpi;
+  return mpi.run([&]() -> std::optional<PairwiseDistances> {
+    const auto n = static_cast<std::int64_t>(entries.size());
+    const std::vector<std::int64_t> first = balanced_row_blocks(n, mpi.size());
+    const auto own = static_cast<std::size_t>(mpi.rank());
+    std::vector<double> block = upper_triangle_rows(entries, first[own], first[own + 1], options);
+    if (mpi.rank() != 0) {
+      for (std::int64_t at = 0; at < static_cast<std::int64_t>(block.size()); at += kPiece) {
+        MPI_Request send;
+        MPI_Isend(block.data() + at, static_cast<int>(std::min(kPiece, static_cast<std::int64_t>(block.size()) - at)),
+                  MPI_DOUBLE, 0, kTagBlock, MPI_COMM_WORLD, &send);
+        wait(send);
+      }
+      return std::nullopt;
+    }
+    std::vector<double> upper = std::move(block);
+    upper.resize(static_cast<std::size_t>(pairs_in_rows(0, n, n)));
+    for (int rank = 1; rank < mpi.size(); ++rank) {
+      const auto r = static_cast<std::size_t>(rank);
+      const std::int64_t start = pairs_in_rows(0, first[r], n), count = pairs_in_rows(first[r], first[r + 1], n);
+      for (std::int64_t at = 0; at < count; at += kPiece) {
+        MPI_Request receive;
+        MPI_Irecv(upper.data() + start + at, static_cast<int>(std::min(kPiece, count - at)), MPI_DOUBLE, rank,
+                  kTagBlock, MPI_COMM_WORLD, &receive);
+        wait(receive);
+      }
+    }
+    std::vector<std::string> names;
+    for (const GraphRecord& e : entries) names.push_back(e.name);
+    return matrix_from_upper_triangle(std::move(names), upper);
+  });
+}
+
+}  // namespace reebkit::cli
