@@ -25,6 +25,8 @@ int run_index(const std::vector<std::string>& args) {
       ("classes", po::value(&classes_path),
        "class labels from a PSB .cla file (model id = file name without extension)")
       ("threads", po::value(&extraction.threads)->default_value(0), "worker threads (0: as many as OpenMP offers)")
+      ("checkpoint-seconds", po::value(&extraction.checkpoint_seconds)->default_value(extraction.checkpoint_seconds),
+       "make the file (under MPI: each process's shard) durable at least this often: what an interruption loses")
       ("resume", po::bool_switch(&extraction.resume),
        "keep the entries already in the file and compute only new or changed meshes (content hash); the "
        "analysis options must be the file's")
@@ -35,7 +37,7 @@ int run_index(const std::vector<std::string>& args) {
   po::positional_options_description positional;
   positional.add("input", -1);
   po::variables_map vm;
-  if (!parse(args, "reeb index INPUT... -o collection.h5 [--classes FILE.cla] [--threads N] [--resume] "
+  if (!parse(args, "reeb index INPUT... -o collection.h5 [--classes FILE.cla] [--threads N] [--checkpoint-seconds S] [--resume] "
              "[--allow-failures] "
              "[analysis options]",
              options, positional, vm))

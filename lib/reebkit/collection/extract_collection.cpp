@@ -225,6 +225,8 @@ void check_extraction(const std::vector<MeshInput>& inputs, const std::vector<Ps
                       const std::filesystem::path& output, const ExtractionOptions& options) {
   if (options.batch_size < 1) throw InvalidArgument("extract_collection: batch_size must be >= 1");
   if (options.threads < 0) throw InvalidArgument("extract_collection: threads must be >= 0");
+  if (!(options.checkpoint_seconds >= 0))
+    throw InvalidArgument("extract_collection: checkpoint_seconds must be >= 0");
   if (!options.analysis.reeb_graph) throw InvalidArgument("extract_collection: the analysis must build the Reeb graph");
   check_analysis_options(options.analysis);
   std::vector<std::filesystem::path> input_files;
