@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <chrono>
 #include <exception>
+#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <mutex>
@@ -75,10 +76,15 @@ class MpiJob {
     std::abort();  // MPI_Abort does not return
   }
 
-  void barrier() const {
+  /// Every process's `values` (the same count on each), in rank order, on
+  /// process 0; empty on the others. Also a barrier for process 0.
+  std::vector<double> gather(std::vector<double> values) const {
+    std::vector<double> all(rank_ == 0 ? values.size() * static_cast<std::size_t>(size_) : 0);
     MPI_Request request;
-    MPI_Ibarrier(MPI_COMM_WORLD, &request);
+    MPI_Igather(values.data(), static_cast<int>(values.size()), MPI_DOUBLE, all.data(), static_cast<int>(values.size()),
+                MPI_DOUBLE, 0, MPI_COMM_WORLD, &request);
     wait(request);
+    return all;
   }
 
   /// Process 0's `value` on every process.
@@ -130,6 +136,16 @@ std::int64_t pairs_in_rows(std::int64_t first, std::int64_t last, std::int64_t n
   return before(last) - before(first);
 }
 
+/// Process 0: what each process computed, from the (count, seconds) pairs of
+/// MpiJob::gather.
+void print_shares(const char* what, const std::vector<double>& shares) {
+  std::cerr << std::fixed << std::setprecision(2);
+  for (std::size_t r = 0; 2 * r < shares.size(); ++r)
+    std::cerr << (r == 0 ? "" : "; ") << "process " << r << ": " << static_cast<std::int64_t>(shares[2 * r]) << " "
+              << what << " in " << shares[2 * r + 1] << " s";
+  std::cerr << std::defaultfloat << "\n";
+}
+
 }  // namespace
 
 std::optional<ExtractionSummary> extract_collection_on_cluster(const std::vector<MeshInput>& inputs,
@@ -161,8 +177,8 @@ std::optional<ExtractionSummary> extract_collection_on_cluster(const std::vector
   return mpi.run([&]() -> std::optional<ExtractionSummary> {
     const std::filesystem::path shard = shard_path(output, mpi.rank());
     if (mpi.rank() != 0) {
-      extract_shard(inputs, classes, shard, ask_for_input, shard_options);
-      mpi.barrier();  // every shard closed
+      const ExtractionSummary done = extract_shard(inputs, classes, shard, ask_for_input, shard_options);
+      mpi.gather({static_cast<double>(done.computed()), done.seconds});  // its shard is closed
       return std::nullopt;
     }
     std::cerr << "indexing " << job.todo.size() << " meshes on " << mpi.size() << " processes"
@@ -175,9 +191,10 @@ std::optional<ExtractionSummary> extract_collection_on_cluster(const std::vector
       return job.todo[next++];
     };
     std::exception_ptr failure;
+    ExtractionSummary done;
     std::thread compute([&] {
       try {
-        extract_shard(inputs, classes, shard, take, shard_options);
+        done = extract_shard(inputs, classes, shard, take, shard_options);
       } catch (...) {
         failure = std::current_exception();
       }
@@ -185,7 +202,7 @@ std::optional<ExtractionSummary> extract_collection_on_cluster(const std::vector
     serve_inputs(take, mpi.size() - 1);
     compute.join();
     if (failure) std::rethrow_exception(failure);
-    mpi.barrier();
+    print_shares("meshes", mpi.gather({static_cast<double>(done.computed()), done.seconds}));  // every shard closed
     ExtractionSummary summary = merge_shards(inputs, classes, output, job, options);
     summary.seconds = clock.lap() / 1000;
     return summary;
@@ -199,7 +216,9 @@ std::optional<PairwiseDistances> all_pairs_on_cluster(const std::vector<GraphRec
     const auto n = static_cast<std::int64_t>(entries.size());
     const std::vector<std::int64_t> first = balanced_row_blocks(n, mpi.size());
     const auto own = static_cast<std::size_t>(mpi.rank());
+    Timer timer;
     std::vector<double> block = upper_triangle_rows(entries, first[own], first[own + 1], options);
+    const std::vector<double> shares = mpi.gather({static_cast<double>(block.size()), timer.lap() / 1000});
     if (mpi.rank() != 0) {
       for (std::int64_t at = 0; at < static_cast<std::int64_t>(block.size()); at += kPiece) {
         MPI_Request send;
@@ -209,6 +228,7 @@ std::optional<PairwiseDistances> all_pairs_on_cluster(const std::vector<GraphRec
       }
       return std::nullopt;
     }
+    print_shares("pairs", shares);
     std::vector<double> upper = std::move(block);
     upper.resize(static_cast<std::size_t>(pairs_in_rows(0, n, n)));
     for (int rank = 1; rank < mpi.size(); ++rank) {
