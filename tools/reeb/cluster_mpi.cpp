@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <exception>
 #include <iomanip>
 #include <iostream>
@@ -27,16 +28,19 @@ namespace {
 constexpr int kTagRequest = 1;  // a process asks process 0 for an input
 constexpr int kTagInput = 2;    // process 0's answer: an input index, -1 for none left
 constexpr int kTagBlock = 3;    // a block of distances
-constexpr auto kPoll = std::chrono::microseconds(200);
+constexpr auto kPoll = std::chrono::microseconds(1000);
 /// Values per message (MPI counts are int).
 constexpr std::int64_t kPiece = std::int64_t{1} << 24;
 
-/// Waits for `request` without spinning.
+/// Waits for `request` without spinning: polls, sleeping from 20 us up to
+/// kPoll between polls.
 void wait(MPI_Request& request, MPI_Status* status = MPI_STATUS_IGNORE) {
+  auto pause = std::chrono::microseconds(20);
   for (int done = 0;;) {
     MPI_Test(&request, &done, status);
     if (done) return;
-    std::this_thread::sleep_for(kPoll);
+    std::this_thread::sleep_for(pause);
+    pause = std::min<std::chrono::microseconds>(2 * pause, kPoll);
   }
 }
 
@@ -118,17 +122,33 @@ void serve_inputs(const InputClaim& take, int others) {
   }
 }
 
-/// Another process than 0: the next input process 0 hands out.
-std::optional<std::size_t> ask_for_input() {
-  std::int64_t request = 0, answer = -1;
-  MPI_Request send, receive;
-  MPI_Irecv(&answer, 1, MPI_INT64_T, 0, kTagInput, MPI_COMM_WORLD, &receive);
-  MPI_Isend(&request, 1, MPI_INT64_T, 0, kTagRequest, MPI_COMM_WORLD, &send);
-  wait(send);
-  wait(receive);
-  if (answer < 0) return std::nullopt;
-  return static_cast<std::size_t>(answer);
-}
+/// Another process than 0: the inputs process 0 hands out. The request for
+/// the next one leaves as soon as the last one arrives, so that the answer
+/// travels while the last one is computed.
+class InputRequests {
+ public:
+  std::optional<std::size_t> operator()() {
+    if (!pending_) post();
+    wait(send_);
+    wait(receive_);
+    pending_ = false;
+    const std::int64_t input = answer_;
+    if (input < 0) return std::nullopt;
+    post();
+    return static_cast<std::size_t>(input);
+  }
+
+ private:
+  void post() {
+    MPI_Irecv(&answer_, 1, MPI_INT64_T, 0, kTagInput, MPI_COMM_WORLD, &receive_);
+    MPI_Isend(&request_, 1, MPI_INT64_T, 0, kTagRequest, MPI_COMM_WORLD, &send_);
+    pending_ = true;
+  }
+
+  std::int64_t request_ = 0, answer_ = -1;
+  MPI_Request send_ = MPI_REQUEST_NULL, receive_ = MPI_REQUEST_NULL;
+  bool pending_ = false;
+};
 
 /// Pairs in the upper-triangle rows [first, last) of an n x n matrix.
 std::int64_t pairs_in_rows(std::int64_t first, std::int64_t last, std::int64_t n) {
@@ -136,13 +156,27 @@ std::int64_t pairs_in_rows(std::int64_t first, std::int64_t last, std::int64_t n
   return before(last) - before(first);
 }
 
-/// Process 0: what each process computed, from the (count, seconds) pairs of
-/// MpiJob::gather.
+/// Wall and CPU time (every thread of the process) since construction.
+class Stopwatch {
+ public:
+  /// `count` things done since construction: {count, wall s, CPU s}.
+  std::vector<double> share(std::int64_t count) const {
+    return {static_cast<double>(count), std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_).count(),
+            static_cast<double>(std::clock() - cpu_) / CLOCKS_PER_SEC};
+  }
+
+ private:
+  std::chrono::steady_clock::time_point wall_ = std::chrono::steady_clock::now();
+  std::clock_t cpu_ = std::clock();
+};
+
+/// Process 0: what each process computed, from the {count, wall s, CPU s}
+/// of Stopwatch::share gathered (MpiJob::gather).
 void print_shares(const char* what, const std::vector<double>& shares) {
   std::cerr << std::fixed << std::setprecision(2);
-  for (std::size_t r = 0; 2 * r < shares.size(); ++r)
-    std::cerr << (r == 0 ? "" : "; ") << "process " << r << ": " << static_cast<std::int64_t>(shares[2 * r]) << " "
-              << what << " in " << shares[2 * r + 1] << " s";
+  for (std::size_t r = 0; 3 * r < shares.size(); ++r)
+    std::cerr << (r == 0 ? "" : "; ") << "process " << r << ": " << static_cast<std::int64_t>(shares[3 * r]) << " "
+              << what << " in " << shares[3 * r + 1] << " s (CPU " << shares[3 * r + 2] << " s)";
   std::cerr << std::defaultfloat << "\n";
 }
 
@@ -176,9 +210,12 @@ std::optional<ExtractionSummary> extract_collection_on_cluster(const std::vector
   shard_options.progress = {};
   return mpi.run([&]() -> std::optional<ExtractionSummary> {
     const std::filesystem::path shard = shard_path(output, mpi.rank());
+    const Stopwatch stopwatch;
     if (mpi.rank() != 0) {
-      const ExtractionSummary done = extract_shard(inputs, classes, shard, ask_for_input, shard_options);
-      mpi.gather({static_cast<double>(done.computed()), done.seconds});  // its shard is closed
+      InputRequests requests;
+      const ExtractionSummary done =
+          extract_shard(inputs, classes, shard, [&requests] { return requests(); }, shard_options);
+      mpi.gather(stopwatch.share(done.computed()));  // its shard is closed
       return std::nullopt;
     }
     std::cerr << "indexing " << job.todo.size() << " meshes on " << mpi.size() << " processes"
@@ -202,7 +239,7 @@ std::optional<ExtractionSummary> extract_collection_on_cluster(const std::vector
     serve_inputs(take, mpi.size() - 1);
     compute.join();
     if (failure) std::rethrow_exception(failure);
-    print_shares("meshes", mpi.gather({static_cast<double>(done.computed()), done.seconds}));  // every shard closed
+    print_shares("meshes", mpi.gather(stopwatch.share(done.computed())));  // every shard closed
     ExtractionSummary summary = merge_shards(inputs, classes, output, job, options);
     summary.seconds = clock.lap() / 1000;
     return summary;
@@ -216,9 +253,9 @@ std::optional<PairwiseDistances> all_pairs_on_cluster(const std::vector<GraphRec
     const auto n = static_cast<std::int64_t>(entries.size());
     const std::vector<std::int64_t> first = balanced_row_blocks(n, mpi.size());
     const auto own = static_cast<std::size_t>(mpi.rank());
-    Timer timer;
+    const Stopwatch stopwatch;
     std::vector<double> block = upper_triangle_rows(entries, first[own], first[own + 1], options);
-    const std::vector<double> shares = mpi.gather({static_cast<double>(block.size()), timer.lap() / 1000});
+    const std::vector<double> shares = mpi.gather(stopwatch.share(static_cast<std::int64_t>(block.size())));
     if (mpi.rank() != 0) {
       for (std::int64_t at = 0; at < static_cast<std::int64_t>(block.size()); at += kPiece) {
         MPI_Request send;
