@@ -62,6 +62,7 @@ printf 'CPU: distances %.2f s at 1 process, the slower of 2 processes %.2f s: sp
 pairs=$((count * (count - 1) / 2))
 printf 'speed-up 1 -> 2 processes: index %.2f, distances %.2f\n' \
   "$(echo "${index_s[1]} / ${index_s[2]}" | bc -l)" "$(echo "${dist_s[1]} / ${dist_s[2]}" | bc -l)"
-printf 'costs at 1 process: %.1f ms per mesh (index), %.2f us per pair (distances), %.2f ms per mesh (merge at 2 processes)\n' \
-  "$(echo "1000 * ${index_s[1]} / $count" | bc -l)" "$(echo "1000000 * ${dist_s[1]} / $pairs" | bc -l)" \
-  "$(echo "1000 * ${merge_s[2]} / $count" | bc -l)"
+printf 'costs: %.1f ms of CPU per mesh (index), %.2f us of CPU per pair (distances), %.2f ms per mesh (merge at 2 processes, wall)\n' \
+  "$(echo "1000 * $(cpu "$work/index1.log" sum) / $count" | bc -l)" \
+  "$(echo "1000000 * $(cpu "$work/dist1.log" sum) / $pairs" | bc -l)" "$(echo "1000 * ${merge_s[2]} / $count" | bc -l)"
+printf 'collection file: %d bytes (%d per mesh)\n' "$(stat -c %s "$work/c2.h5")" "$(($(stat -c %s "$work/c2.h5") / count))"

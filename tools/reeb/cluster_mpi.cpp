@@ -10,10 +10,12 @@
 #include "reebkit/io/file_lock.h"
 
 #include <mpi.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <chrono>
 #include <ctime>
+#include <deque>
 #include <exception>
 #include <iomanip>
 #include <iostream>
@@ -27,7 +29,8 @@ namespace {
 
 constexpr int kTagRequest = 1;  // a process asks process 0 for an input
 constexpr int kTagInput = 2;    // process 0's answer: an input index, -1 for none left
-constexpr int kTagBlock = 3;    // a block of distances
+constexpr int kTagDone = 3;     // a process has all its answers and asks no more
+constexpr int kTagBlock = 4;    // a block of distances
 constexpr auto kPoll = std::chrono::microseconds(1000);
 /// Values per message (MPI counts are int).
 constexpr std::int64_t kPiece = std::int64_t{1} << 24;
@@ -105,49 +108,77 @@ class MpiJob {
 };
 
 /// Process 0: answers the other processes' requests for an input with
-/// `take` until each of them was told that none is left.
+/// `take` until each of them said it asks no more.
 void serve_inputs(const InputClaim& take, int others) {
   while (others > 0) {
-    std::int64_t request = 0;
+    std::int64_t message = 0;
     MPI_Request receive;
-    MPI_Irecv(&request, 1, MPI_INT64_T, MPI_ANY_SOURCE, kTagRequest, MPI_COMM_WORLD, &receive);
+    MPI_Irecv(&message, 1, MPI_INT64_T, MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &receive);
     MPI_Status status;
     wait(receive, &status);
+    if (status.MPI_TAG == kTagDone) {
+      --others;
+      continue;
+    }
     const std::optional<std::size_t> input = take();
     std::int64_t answer = input ? static_cast<std::int64_t>(*input) : -1;
     MPI_Request send;
     MPI_Isend(&answer, 1, MPI_INT64_T, status.MPI_SOURCE, kTagInput, MPI_COMM_WORLD, &send);
     wait(send);
-    if (!input) --others;
   }
 }
 
-/// Another process than 0: the inputs process 0 hands out. The request for
-/// the next one leaves as soon as the last one arrives, so that the answer
-/// travels while the last one is computed.
+/// Another process than 0: the inputs process 0 hands out. `depth` requests
+/// are kept out (one per worker thread), so that the answers travel while
+/// the workers compute; MPI delivers them in the order asked.
 class InputRequests {
  public:
+  explicit InputRequests(int depth) : depth_(static_cast<std::size_t>(std::max(1, depth))) {}
+
   std::optional<std::size_t> operator()() {
-    if (!pending_) post();
-    wait(send_);
-    wait(receive_);
-    pending_ = false;
-    const std::int64_t input = answer_;
-    if (input < 0) return std::nullopt;
-    post();
+    while (!exhausted_ && out_.size() < depth_) post();
+    if (out_.empty()) return std::nullopt;
+    Request& first = *out_.front();
+    wait(first.send);
+    wait(first.receive);
+    const std::int64_t input = first.answer;
+    out_.pop_front();
+    if (input < 0) {
+      exhausted_ = true;  // the requests still out get the same answer
+      return std::nullopt;
+    }
     return static_cast<std::size_t>(input);
   }
 
- private:
-  void post() {
-    MPI_Irecv(&answer_, 1, MPI_INT64_T, 0, kTagInput, MPI_COMM_WORLD, &receive_);
-    MPI_Isend(&request_, 1, MPI_INT64_T, 0, kTagRequest, MPI_COMM_WORLD, &send_);
-    pending_ = true;
+  /// Takes the answers still out (none left) and tells process 0 that this
+  /// process asks no more.
+  void finish() {
+    for (const auto& request : out_) {
+      wait(request->send);
+      wait(request->receive);
+    }
+    out_.clear();
+    std::int64_t done = 0;
+    MPI_Request send;
+    MPI_Isend(&done, 1, MPI_INT64_T, 0, kTagDone, MPI_COMM_WORLD, &send);
+    wait(send);
   }
 
-  std::int64_t request_ = 0, answer_ = -1;
-  MPI_Request send_ = MPI_REQUEST_NULL, receive_ = MPI_REQUEST_NULL;
-  bool pending_ = false;
+ private:
+  struct Request {  // MPI holds the buffers' addresses until completion
+    std::int64_t question = 0, answer = -1;
+    MPI_Request send = MPI_REQUEST_NULL, receive = MPI_REQUEST_NULL;
+  };
+  void post() {
+    auto request = std::make_unique<Request>();
+    MPI_Irecv(&request->answer, 1, MPI_INT64_T, 0, kTagInput, MPI_COMM_WORLD, &request->receive);
+    MPI_Isend(&request->question, 1, MPI_INT64_T, 0, kTagRequest, MPI_COMM_WORLD, &request->send);
+    out_.push_back(std::move(request));
+  }
+
+  std::size_t depth_;
+  std::deque<std::unique_ptr<Request>> out_;
+  bool exhausted_ = false;
 };
 
 /// Pairs in the upper-triangle rows [first, last) of an n x n matrix.
@@ -212,9 +243,10 @@ std::optional<ExtractionSummary> extract_collection_on_cluster(const std::vector
     const std::filesystem::path shard = shard_path(output, mpi.rank());
     const Stopwatch stopwatch;
     if (mpi.rank() != 0) {
-      InputRequests requests;
+      InputRequests requests(options.threads > 0 ? options.threads : omp_get_max_threads());
       const ExtractionSummary done =
           extract_shard(inputs, classes, shard, [&requests] { return requests(); }, shard_options);
+      requests.finish();
       mpi.gather(stopwatch.share(done.computed()));  // its shard is closed
       return std::nullopt;
     }
