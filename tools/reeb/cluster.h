@@ -23,11 +23,12 @@ int launched_rank();
 /// reeb index across the processes of the job. Every process checks the
 /// inputs and options (check_extraction); process 0 takes the lock of
 /// `output` and plans the job (plan_sharded_job; a refusal ends every
-/// process cleanly), hands the inputs to compute out one at a time, in
-/// input order, to whichever process asks (its own threads included: no
-/// static split), and each process computes them with its threads into its
-/// own shard (extract_shard); process 0 then merges the shards into
-/// `output` (merge_shards). A process that fails aborts the job (MPI_Abort):
+/// process cleanly), hands the inputs to compute out in input order to
+/// whichever process asks (its own threads one at a time, the others in
+/// chunks that shrink with what is left: no static split), and each
+/// process computes them with its threads into its own shard
+/// (extract_shard); process 0 then merges the shards into `output`
+/// (merge_shards). A process that fails aborts the job (MPI_Abort):
 /// every shard keeps the entries of its last checkpoint, and the same
 /// command with options.resume goes on from there. Returns the job's
 /// summary on process 0, nothing on the others. Throws Error in a build

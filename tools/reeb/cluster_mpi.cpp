@@ -13,6 +13,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <ctime>
 #include <deque>
@@ -107,9 +108,46 @@ class MpiJob {
   int size_ = 1;
 };
 
-/// Process 0: answers the other processes' requests for an input with
-/// `take` until each of them said it asks no more.
-void serve_inputs(const InputClaim& take, int others) {
+/// Inputs in one answer at most.
+constexpr std::size_t kMaxChunk = 64;
+
+/// The meshes still to hand out (process 0), for its own workers one at a
+/// time and for the other processes in chunks.
+class InputQueue {
+ public:
+  InputQueue(const std::vector<std::size_t>& todo, int processes)
+      : todo_(todo), processes_(static_cast<std::size_t>(processes)) {}
+
+  std::optional<std::size_t> take() {
+    const std::lock_guard<std::mutex> hold(mutex_);
+    if (next_ == todo_.size()) return std::nullopt;
+    return todo_[next_++];
+  }
+
+  /// The next inputs for another process: a chunk that shrinks with what is
+  /// left (guided self-scheduling: a quarter of a process's share, 1 to
+  /// kMaxChunk), so that the requests are few while much is left and the
+  /// processes end together. Empty: none left.
+  std::vector<std::size_t> take_chunk() {
+    const std::lock_guard<std::mutex> hold(mutex_);
+    const std::size_t left = todo_.size() - next_;
+    const std::size_t count = std::min(left, std::clamp<std::size_t>(left / (4 * processes_), 1, kMaxChunk));
+    std::vector<std::size_t> chunk(todo_.begin() + static_cast<std::ptrdiff_t>(next_),
+                                   todo_.begin() + static_cast<std::ptrdiff_t>(next_ + count));
+    next_ += count;
+    return chunk;
+  }
+
+ private:
+  const std::vector<std::size_t>& todo_;
+  std::size_t processes_;
+  std::mutex mutex_;
+  std::size_t next_ = 0;
+};
+
+/// Process 0: answers the other processes' requests for inputs with chunks
+/// of `queue` until each of them said it asks no more.
+void serve_inputs(InputQueue& queue, int others) {
   while (others > 0) {
     std::int64_t message = 0;
     MPI_Request receive;
@@ -120,10 +158,11 @@ void serve_inputs(const InputClaim& take, int others) {
       --others;
       continue;
     }
-    const std::optional<std::size_t> input = take();
-    std::int64_t answer = input ? static_cast<std::int64_t>(*input) : -1;
+    std::vector<std::int64_t> answer;  // the inputs; none: none left
+    for (const std::size_t input : queue.take_chunk()) answer.push_back(static_cast<std::int64_t>(input));
     MPI_Request send;
-    MPI_Isend(&answer, 1, MPI_INT64_T, status.MPI_SOURCE, kTagInput, MPI_COMM_WORLD, &send);
+    MPI_Isend(answer.data(), static_cast<int>(answer.size()), MPI_INT64_T, status.MPI_SOURCE, kTagInput,
+              MPI_COMM_WORLD, &send);
     wait(send);
   }
 }
@@ -137,17 +176,22 @@ class InputRequests {
 
   std::optional<std::size_t> operator()() {
     while (!exhausted_ && out_.size() < depth_) post();
-    if (out_.empty()) return std::nullopt;
-    Request& first = *out_.front();
-    wait(first.send);
-    wait(first.receive);
-    const std::int64_t input = first.answer;
-    out_.pop_front();
-    if (input < 0) {
-      exhausted_ = true;  // the requests still out get the same answer
-      return std::nullopt;
+    while (ready_.empty()) {
+      if (out_.empty()) return std::nullopt;
+      Request& first = *out_.front();
+      wait(first.send);
+      MPI_Status status;
+      wait(first.receive, &status);
+      int count = 0;
+      MPI_Get_count(&status, MPI_INT64_T, &count);
+      for (int k = 0; k < count; ++k) ready_.push_back(static_cast<std::size_t>(first.answer[static_cast<std::size_t>(k)]));
+      out_.pop_front();
+      if (count == 0) exhausted_ = true;  // the requests still out get the same answer
+      if (!exhausted_) post();
     }
-    return static_cast<std::size_t>(input);
+    const std::size_t input = ready_.front();
+    ready_.pop_front();
+    return input;
   }
 
   /// Takes the answers still out (none left) and tells process 0 that this
@@ -166,18 +210,21 @@ class InputRequests {
 
  private:
   struct Request {  // MPI holds the buffers' addresses until completion
-    std::int64_t question = 0, answer = -1;
+    std::int64_t question = 0;
+    std::array<std::int64_t, kMaxChunk> answer{};
     MPI_Request send = MPI_REQUEST_NULL, receive = MPI_REQUEST_NULL;
   };
   void post() {
     auto request = std::make_unique<Request>();
-    MPI_Irecv(&request->answer, 1, MPI_INT64_T, 0, kTagInput, MPI_COMM_WORLD, &request->receive);
+    MPI_Irecv(request->answer.data(), static_cast<int>(kMaxChunk), MPI_INT64_T, 0, kTagInput, MPI_COMM_WORLD,
+              &request->receive);
     MPI_Isend(&request->question, 1, MPI_INT64_T, 0, kTagRequest, MPI_COMM_WORLD, &request->send);
     out_.push_back(std::move(request));
   }
 
   std::size_t depth_;
   std::deque<std::unique_ptr<Request>> out_;
+  std::deque<std::size_t> ready_;  // inputs received, not yet claimed
   bool exhausted_ = false;
 };
 
@@ -252,23 +299,17 @@ std::optional<ExtractionSummary> extract_collection_on_cluster(const std::vector
     }
     std::cerr << "indexing " << job.todo.size() << " meshes on " << mpi.size() << " processes"
               << (job.skipped > 0 ? " (" + std::to_string(job.skipped) + " already indexed)" : std::string()) << "\n";
-    std::mutex mutex;
-    std::size_t next = 0;
-    const InputClaim take = [&]() -> std::optional<std::size_t> {
-      const std::lock_guard<std::mutex> hold(mutex);
-      if (next == job.todo.size()) return std::nullopt;
-      return job.todo[next++];
-    };
+    InputQueue queue(job.todo, mpi.size());
     std::exception_ptr failure;
     ExtractionSummary done;
     std::thread compute([&] {
       try {
-        done = extract_shard(inputs, classes, shard, take, shard_options);
+        done = extract_shard(inputs, classes, shard, [&queue] { return queue.take(); }, shard_options);
       } catch (...) {
         failure = std::current_exception();
       }
     });
-    serve_inputs(take, mpi.size() - 1);
+    serve_inputs(queue, mpi.size() - 1);
     compute.join();
     if (failure) std::rethrow_exception(failure);
     print_shares("meshes", mpi.gather(stopwatch.share(done.computed())));  // every shard closed
