@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cstdlib>
 #include <ctime>
 #include <deque>
 #include <exception>
@@ -276,7 +277,7 @@ std::optional<ExtractionSummary> extract_collection_on_cluster(const std::vector
     try {
       lock = std::make_unique<FileLock>(output);
       job = plan_sharded_job(inputs, output, options);
-    } catch (const Error& e) {
+    } catch (const std::exception& e) {
       refusal = e.what();
     }
   }

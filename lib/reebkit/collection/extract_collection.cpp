@@ -12,7 +12,6 @@
 
 #include <omp.h>
 
-#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <exception>
