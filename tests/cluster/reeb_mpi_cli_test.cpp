@@ -75,9 +75,18 @@ class ReebMpiCli : public ::testing::Test {
 
 TempDir* ReebMpiCli::dir_ = nullptr;
 
+/// `reeb distances` of `collection` into `matrix`: the bytes of the matrix.
+std::string distances_of(const std::filesystem::path& collection, const std::filesystem::path& matrix) {
+  const auto [status, out] =
+      run_command(kReeb + " distances " + shell_quoted(collection) + " -o " + shell_quoted(matrix) + " 2>&1");
+  EXPECT_EQ(status, 0) << out;
+  return file_bytes(matrix);
+}
+
 TEST_F(ReebMpiCli, TwoAndThreeProcessesWriteTheCollectionOneProcessWrites) {
   const CollectionReader one(single());
   ASSERT_EQ(one.size(), 48);
+  const std::string one_matrix = distances_of(single(), *dir_ / "one.matrix");
   for (const int processes : {2, 3}) {
     SCOPED_TRACE(std::to_string(processes) + " processes");
     const std::filesystem::path output = *dir_ / ("mpi" + std::to_string(processes) + ".h5");
@@ -98,6 +107,7 @@ TEST_F(ReebMpiCli, TwoAndThreeProcessesWriteTheCollectionOneProcessWrites) {
     const CollectionReader many(output);
     EXPECT_EQ(many.names(), one.names());
     EXPECT_EQ(many.provenance().classes.size(), one.provenance().classes.size());
+    EXPECT_TRUE(distances_of(output, *dir_ / "many.matrix") == one_matrix);
   }
   // The comparison sees a difference: another input order is another file.
   const auto [reversed, out] =
