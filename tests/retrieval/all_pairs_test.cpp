@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 
 namespace reebkit::test {
@@ -40,6 +42,45 @@ TEST(AllPairs, SymmetricZeroDiagonalEqualToMatchingAndSerialEqualsParallel) {
     }
   }
   EXPECT_THROW(all_pairs_distances(entries, AllPairsOptions{-1, {}}), InvalidArgument);
+}
+
+TEST(AllPairs, BalancedRowBlocksSplitThePairsEvenlyAndAssembleIntoTheSameMatrix) {
+  // Every split covers the rows once, in order, with about equal pair counts.
+  for (const std::int64_t n : {0, 1, 2, 5, 48, 400, 1001})
+    for (const int parts : {1, 2, 3, 7, 64}) {
+      SCOPED_TRACE(std::to_string(n) + " rows, " + std::to_string(parts) + " parts");
+      const std::vector<std::int64_t> first = balanced_row_blocks(n, parts);
+      ASSERT_EQ(first.size(), static_cast<std::size_t>(parts) + 1);
+      EXPECT_EQ(first.front(), 0);
+      EXPECT_EQ(first.back(), n);
+      EXPECT_TRUE(std::is_sorted(first.begin(), first.end()));
+      const double share = static_cast<double>(n) * static_cast<double>(n - 1) / 2 / parts;
+      for (int b = 0; b < parts; ++b) {
+        std::int64_t pairs = 0;
+        for (std::int64_t i = first[static_cast<std::size_t>(b)]; i < first[static_cast<std::size_t>(b) + 1]; ++i)
+          pairs += n - 1 - i;
+        EXPECT_LE(std::abs(static_cast<double>(pairs) - share), static_cast<double>(n)) << "block " << b;
+      }
+    }
+  // 400 rows in 2: the first block is the 117 longest rows (39,897 of the
+  // 79,800 pairs), not 200 rows.
+  EXPECT_EQ(balanced_row_blocks(400, 2)[1], 117);
+  EXPECT_THROW(balanced_row_blocks(10, 0), InvalidArgument);
+
+  // Blocks computed apart assemble into the matrix all_pairs_distances gives, bit for bit.
+  const std::vector<GraphRecord>& entries = generated_entries();
+  const auto n = static_cast<std::int64_t>(entries.size());
+  const PairwiseDistances whole = all_pairs_distances(entries);
+  const std::vector<std::int64_t> first = balanced_row_blocks(n, 3);
+  std::vector<double> upper;
+  for (std::size_t b = 0; b < 3; ++b) {
+    const std::vector<double> block = upper_triangle_rows(entries, first[b], first[b + 1]);
+    upper.insert(upper.end(), block.begin(), block.end());
+  }
+  EXPECT_EQ(matrix_from_upper_triangle(whole.names, upper).values, whole.values);
+  EXPECT_EQ(upper_triangle_rows(entries, 2, 3).front(), whole(2, 3));
+  EXPECT_THROW(upper_triangle_rows(entries, 2, n + 1), InvalidArgument);
+  EXPECT_THROW(matrix_from_upper_triangle(whole.names, {1.0}), InvalidArgument);
 }
 
 void write_text(const std::filesystem::path& path, const std::string& text) { std::ofstream(path) << text; }

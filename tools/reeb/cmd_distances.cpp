@@ -3,6 +3,7 @@
 // Benchmark binary matrix and optionally the SHREC ASCII matrix (docs/command-line.md,
 // "Query and distances").
 #include "reeb/cli.h"
+#include "reeb/cluster.h"
 #include "reebkit/core/error.h"
 #include "reebkit/core/timer.h"
 #include "reebkit/evaluation/distance_matrix.h"
@@ -11,6 +12,7 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 
 namespace reebkit::cli {
 
@@ -69,12 +71,15 @@ int run_distances(const std::vector<std::string>& args) {
 
   const CollectionReader collection(path);
   const auto [rows, order] = ordered_rows(collection, path, classes_path);
-  std::cerr << "rows in the " << order << "\n";
+  // Under mpirun or srun every process computes a block of rows; process 0
+  // prints and writes (docs/cluster.md).
+  const bool first_process = launched_rank() == 0;
+  if (first_process) std::cerr << "rows in the " << order << "\n";
   std::vector<std::string> failed;  // a failed entry has a NaN signature (docs/collection-file.md)
   for (const std::int64_t row : rows)
     if (std::isnan(collection.signatures()[static_cast<std::size_t>(row) * kSignatureLength]))
       failed.push_back(collection.names()[static_cast<std::size_t>(row)]);
-  if (!failed.empty()) {
+  if (!failed.empty() && first_process) {
     std::cerr << "warning: " << failed.size() << " of " << rows.size()
               << " entries failed when indexed (reeb info lists why); their rows and columns hold the largest "
                  "float, "
@@ -83,7 +88,14 @@ int run_distances(const std::vector<std::string>& args) {
     std::cerr << (failed.size() > 10 ? " ...\n" : "\n");
   }
   Timer timer;
-  const PairwiseDistances distances = all_pairs_distances(collection, rows, all_pairs);
+  std::optional<PairwiseDistances> result;
+  if (launched_by_mpi()) {
+    result = all_pairs_on_cluster(matrix_entries(collection, rows), all_pairs);
+    if (!result) return 0;
+  } else {
+    result = all_pairs_distances(collection, rows, all_pairs);
+  }
+  const PairwiseDistances& distances = *result;
   const double seconds = timer.lap() / 1000;
   const std::int64_t n = distances.size();
   DistanceMatrix matrix(n, n);

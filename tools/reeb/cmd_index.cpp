@@ -1,11 +1,13 @@
 // reeb index INPUT... -o collection.h5: the attributed Reeb graph of every
 // mesh of a collection in one HDF5 file (docs/command-line.md, "Indexing a collection").
 #include "reeb/cli.h"
+#include "reeb/cluster.h"
 #include "reebkit/collection/extract_collection.h"
 
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 
 namespace reebkit::cli {
 
@@ -23,6 +25,8 @@ int run_index(const std::vector<std::string>& args) {
       ("classes", po::value(&classes_path),
        "class labels from a PSB .cla file (model id = file name without extension)")
       ("threads", po::value(&extraction.threads)->default_value(0), "worker threads (0: as many as OpenMP offers)")
+      ("checkpoint-seconds", po::value(&extraction.checkpoint_seconds)->default_value(extraction.checkpoint_seconds),
+       "make the file (under MPI: each process's shard) durable at least this often: what an interruption loses")
       ("resume", po::bool_switch(&extraction.resume),
        "keep the entries already in the file and compute only new or changed meshes (content hash); the "
        "analysis options must be the file's")
@@ -33,7 +37,7 @@ int run_index(const std::vector<std::string>& args) {
   po::positional_options_description positional;
   positional.add("input", -1);
   po::variables_map vm;
-  if (!parse(args, "reeb index INPUT... -o collection.h5 [--classes FILE.cla] [--threads N] [--resume] "
+  if (!parse(args, "reeb index INPUT... -o collection.h5 [--classes FILE.cla] [--threads N] [--checkpoint-seconds S] [--resume] "
              "[--allow-failures] "
              "[analysis options]",
              options, positional, vm))
@@ -45,10 +49,19 @@ int run_index(const std::vector<std::string>& args) {
   extraction.command = "reeb index";
   for (const std::string& a : args) extraction.command += " " + a;
   ProgressBar bar = ProgressBar::for_stderr();
-  extraction.progress = [&bar](const ProgressState& state) { bar(state); };
-  std::cerr << "indexing " << meshes.size() << " meshes into " << output << "\n";
-
-  const ExtractionSummary summary = extract_collection(meshes, classes, output, extraction);
+  // Under mpirun or srun: every process computes, process 0 hands the meshes
+  // out, merges the shards and reports (docs/cluster.md).
+  const bool cluster = launched_by_mpi();
+  std::optional<ExtractionSummary> result;
+  if (cluster) {
+    result = extract_collection_on_cluster(meshes, classes, output, extraction);
+    if (!result) return 0;  // not process 0: it reports for the job
+  } else {
+    extraction.progress = [&bar](const ProgressState& state) { bar(state); };
+    std::cerr << "indexing " << meshes.size() << " meshes into " << output << "\n";
+    result = extract_collection(meshes, classes, output, extraction);
+  }
+  const ExtractionSummary& summary = *result;
   const auto failed = static_cast<std::int64_t>(summary.failed.size());
   ProgressState done;
   done.total = static_cast<std::int64_t>(meshes.size());
@@ -58,7 +71,8 @@ int run_index(const std::vector<std::string>& args) {
   done.seconds = summary.seconds;
   bar.finish(done);
   for (const FailedMesh& f : summary.failed) std::cerr << "failed: " << f.name << ": " << f.reason << "\n";
-  std::cerr << std::fixed << std::setprecision(2) << "writing the file: " << summary.write_seconds << " s ("
+  std::cerr << std::fixed << std::setprecision(2) << (cluster ? "merging the shards: " : "writing the file: ")
+            << summary.write_seconds << " s ("
             << (summary.seconds > 0 ? 100 * summary.write_seconds / summary.seconds : 0.0) << " % of the time)\n"
             << std::defaultfloat;
   if (summary.all_failed) {

@@ -12,7 +12,6 @@
 
 #include <omp.h>
 
-#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <exception>
@@ -94,85 +93,113 @@ class EntrySink {
   double last_checkpoint_ = 0;
 };
 
-/// Computes entries todo[0..] with `workers` OpenMP threads and hands them
-/// to `sink` in order from the calling thread (OpenMP thread 0), which does
-/// no computing: the HDF5 calls all come from it. A worker runs at most
-/// `window` entries ahead of the writer, which bounds memory.
-template <typename Compute>
-void compute_in_order(std::size_t count, int workers, std::size_t window, Compute compute, EntrySink& sink) {
+/// Computes the entries of the jobs `claim()` hands out (it returns the next
+/// job, or none when there is no job left) with `workers` OpenMP threads
+/// and hands them to `sink` in claim order from the calling thread (OpenMP
+/// thread 0), which does no computing: the HDF5 calls all come from it.
+/// `claim` is called under a lock, so never concurrently, and not again
+/// once it returned none. A worker runs at most `window` entries ahead of
+/// the writer, which bounds memory.
+template <typename Claim, typename Compute>
+void compute_in_order(Claim claim, int workers, std::size_t window, Compute compute, EntrySink& sink) {
   std::vector<std::optional<GraphRecord>> ring(window);
   std::mutex mutex;
   std::condition_variable ready, space;
-  std::size_t written = 0;  // entries taken by the writer (guarded by mutex)
-  bool abort = false;       // the writer failed: workers stop (guarded by mutex)
-  std::atomic<std::size_t> next{0};
+  // guarded by mutex:
+  std::size_t written = 0;  // entries taken by the writer
+  std::size_t claimed = 0;  // jobs claimed by the workers
+  bool exhausted = false;   // claim() returned none: `claimed` is the number of entries
+  bool abort = false;       // the writer failed: workers stop
   std::exception_ptr error;
 
 #pragma omp parallel num_threads(workers + 1)
   {
     if (omp_get_thread_num() == 0) {
-      const bool alone = omp_get_num_threads() == 1;  // no thread to spare: compute and write in turn
       try {
-        for (std::size_t k = 0; k < count; ++k) {
-          if (alone) {
-            sink.write(compute(k));
-            continue;
+        if (omp_get_num_threads() == 1) {  // no thread to spare: compute and write in turn
+          for (auto job = claim(); job; job = claim()) sink.write(compute(*job));
+        } else {
+          for (std::size_t k = 0;; ++k) {
+            GraphRecord entry;
+            {
+              std::unique_lock<std::mutex> lock(mutex);
+              ready.wait(lock, [&] { return abort || ring[k % window].has_value() || (exhausted && k == claimed); });
+              if (abort || !ring[k % window]) break;
+              entry = std::move(*ring[k % window]);
+              ring[k % window].reset();
+              written = k + 1;
+            }
+            space.notify_all();
+            sink.write(std::move(entry));
           }
-          GraphRecord entry;
-          {
-            std::unique_lock<std::mutex> lock(mutex);
-            ready.wait(lock, [&] { return ring[k % window].has_value(); });
-            entry = std::move(*ring[k % window]);
-            ring[k % window].reset();
-            written = k + 1;
-          }
-          space.notify_all();
-          sink.write(std::move(entry));
         }
       } catch (...) {
-        error = std::current_exception();
         const std::lock_guard<std::mutex> lock(mutex);
+        if (!error) error = std::current_exception();
         abort = true;
       }
       space.notify_all();
     } else {
-      // Dynamic schedule: each worker takes the next mesh when it is free.
-      for (std::size_t k = next++; k < count; k = next++) {
-        {
-          std::unique_lock<std::mutex> lock(mutex);
-          space.wait(lock, [&] { return abort || k < written + window; });
-          if (abort) break;
+      // Dynamic schedule: each worker claims the next job when it is free.
+      try {
+        for (;;) {
+          std::size_t k = 0;
+          decltype(claim()) job;
+          {
+            std::unique_lock<std::mutex> lock(mutex);
+            space.wait(lock, [&] { return abort || exhausted || claimed < written + window; });
+            if (abort || exhausted) break;
+            job = claim();
+            if (job)
+              k = claimed++;
+            else
+              exhausted = true;
+          }
+          if (!job) {
+            ready.notify_one();
+            space.notify_all();
+            break;
+          }
+          GraphRecord entry = compute(*job);
+          {
+            const std::lock_guard<std::mutex> lock(mutex);
+            ring[k % window] = std::move(entry);
+          }
+          ready.notify_one();
         }
-        GraphRecord entry = compute(k);
+      } catch (...) {  // claim() failed: the writer and the other workers stop
         {
           const std::lock_guard<std::mutex> lock(mutex);
-          ring[k % window] = std::move(entry);
+          if (!error) error = std::current_exception();
+          abort = true;
         }
         ready.notify_one();
+        space.notify_all();
       }
     }
   }
   if (error) std::rethrow_exception(error);
 }
 
-/// Content hashes of the inputs, read in parallel; 0 for a file that cannot
-/// be read (load_mesh then reports why).
+}  // namespace
+
+std::uint64_t input_hash(const MeshInput& input) {
+  try {
+    return content_hash(input.path);
+  } catch (const std::exception&) {
+    return 0;
+  }
+}
+
 std::vector<std::uint64_t> hash_inputs(const std::vector<MeshInput>& inputs, int threads) {
   std::vector<std::uint64_t> hashes(inputs.size(), 0);
   const auto n = static_cast<std::ptrdiff_t>(inputs.size());
 #pragma omp parallel for schedule(dynamic, 16) num_threads(threads)
-  for (std::ptrdiff_t i = 0; i < n; ++i) {
-    try {
-      hashes[static_cast<std::size_t>(i)] = content_hash(inputs[static_cast<std::size_t>(i)].path);
-    } catch (const std::exception&) {
-      hashes[static_cast<std::size_t>(i)] = 0;
-    }
-  }
+  for (std::ptrdiff_t i = 0; i < n; ++i)
+    hashes[static_cast<std::size_t>(i)] = input_hash(inputs[static_cast<std::size_t>(i)]);
   return hashes;
 }
 
-/// Throws Error unless the collection file `path`, whose provenance is
-/// `indexed`, was analysed with `analysis`.
 void refuse_other_analysis(const std::filesystem::path& path, const Provenance& indexed,
                            const AnalysisOptions& analysis) {
   const std::vector<OptionDifference> differences =
@@ -184,7 +211,6 @@ void refuse_other_analysis(const std::filesystem::path& path, const Provenance& 
   throw Error(message + "\n(resume with the file's options, or index into a new file)");
 }
 
-/// Whether `path` opens as a collection file.
 bool opens_as_collection(const std::filesystem::path& path) {
   try {
     const CollectionReader reader(path);
@@ -194,12 +220,12 @@ bool opens_as_collection(const std::filesystem::path& path) {
   }
 }
 
-/// Everything checked before any mesh is read: the options, the output
-/// (its folder, not an input) and that the classes name some input.
-void check_before_work(const std::vector<MeshInput>& inputs, const std::vector<PsbClass>& classes,
-                       const std::filesystem::path& output, const ExtractionOptions& options) {
+void check_extraction(const std::vector<MeshInput>& inputs, const std::vector<PsbClass>& classes,
+                      const std::filesystem::path& output, const ExtractionOptions& options) {
   if (options.batch_size < 1) throw InvalidArgument("extract_collection: batch_size must be >= 1");
   if (options.threads < 0) throw InvalidArgument("extract_collection: threads must be >= 0");
+  if (!(options.checkpoint_seconds >= 0))
+    throw InvalidArgument("extract_collection: checkpoint_seconds must be >= 0");
   if (!options.analysis.reeb_graph) throw InvalidArgument("extract_collection: the analysis must build the Reeb graph");
   check_analysis_options(options.analysis);
   std::vector<std::filesystem::path> input_files;
@@ -219,7 +245,15 @@ void check_before_work(const std::vector<MeshInput>& inputs, const std::vector<P
                         "extension)");
 }
 
-}  // namespace
+Provenance extraction_provenance(const std::vector<PsbClass>& classes, const ExtractionOptions& options) {
+  Provenance provenance;
+  provenance.options = analysis_options_json(options.analysis);
+  provenance.analysis_options = named_analysis_options(options.analysis);
+  provenance.command = options.command;
+  provenance.classes = classes;
+  provenance.classes_file = options.classes_file;
+  return provenance;
+}
 
 std::string analysis_options_json(const AnalysisOptions& options) {
   std::ostringstream text;
@@ -254,7 +288,7 @@ std::string analysis_options_json(const AnalysisOptions& options) {
 
 ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const std::vector<PsbClass>& classes,
                                      const std::filesystem::path& output, const ExtractionOptions& options) {
-  check_before_work(inputs, classes, output, options);
+  check_extraction(inputs, classes, output, options);
   const FileLock lock(output);
   // A new collection is written into OUTPUT.partial, renamed over OUTPUT at
   // the end; resume goes on in place, in OUTPUT.partial when an interrupted
@@ -267,12 +301,7 @@ ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const
   const std::filesystem::path target = in_place ? output : partial;
   const bool resume = options.resume && std::filesystem::exists(target);
 
-  Provenance provenance;
-  provenance.options = analysis_options_json(options.analysis);
-  provenance.analysis_options = named_analysis_options(options.analysis);
-  provenance.command = options.command;
-  provenance.classes = classes;
-  provenance.classes_file = options.classes_file;
+  Provenance provenance = extraction_provenance(classes, options);
   if (resume) {
     const Provenance indexed = CollectionReader(target).provenance();
     refuse_other_analysis(target, indexed, options.analysis);
@@ -337,11 +366,15 @@ ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const
 
   EntrySink sink(*writer, options, summary, progress, clock);
   try {
+    std::size_t next = 0;
     compute_in_order(
-        todo.size(), threads, static_cast<std::size_t>(options.batch_size),
-        [&](std::size_t k) {
-          const MeshInput& input = inputs[todo[k]];
-          return compute_entry(input, hashes[todo[k]], class_of(class_of_model, input.name), options.analysis);
+        [&]() -> std::optional<std::size_t> {
+          if (next == todo.size()) return std::nullopt;
+          return todo[next++];
+        },
+        threads, static_cast<std::size_t>(options.batch_size),
+        [&](std::size_t i) {
+          return compute_entry(inputs[i], hashes[i], class_of(class_of_model, inputs[i].name), options.analysis);
         },
         sink);
     sink.timed([&] { writer->close(); });
@@ -369,6 +402,39 @@ ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const
   summary.seconds = clock.elapsed() / 1000;
   progress.seconds = summary.seconds;
   if (options.progress && todo.empty()) options.progress(progress);
+  return summary;
+}
+
+
+ExtractionSummary extract_shard(const std::vector<MeshInput>& inputs, const std::vector<PsbClass>& classes,
+                                const std::filesystem::path& shard, const InputClaim& claim,
+                                const ExtractionOptions& options) {
+  const Stopwatch clock;
+  ExtractionSummary summary;
+  ProgressState progress;
+  progress.total = static_cast<std::int64_t>(inputs.size());
+  const ClassMap class_of_model = class_map(classes);
+  Timer open_time;
+  CollectionWriter writer(shard, extraction_provenance(classes, options), true);
+  summary.kept = static_cast<std::int64_t>(writer.existing().size());
+  summary.write_seconds += open_time.lap() / 1000;
+  EntrySink sink(writer, options, summary, progress, clock);
+  compute_in_order(
+      [&]() -> std::optional<std::size_t> {
+        const std::optional<std::size_t> i = claim();
+        if (i && *i >= inputs.size())
+          throw InvalidArgument(shard.string() + ": claimed input " + std::to_string(*i) + " of " +
+                                std::to_string(inputs.size()));
+        return i;
+      },
+      options.threads > 0 ? options.threads : omp_get_max_threads(), static_cast<std::size_t>(options.batch_size),
+      [&](std::size_t i) {
+        return compute_entry(inputs[i], input_hash(inputs[i]), class_of(class_of_model, inputs[i].name),
+                             options.analysis);
+      },
+      sink);
+  sink.timed([&] { writer.close(); });
+  summary.seconds = clock.elapsed() / 1000;
   return summary;
 }
 

@@ -9,9 +9,12 @@
 #include "reebkit/collection/progress.h"
 #include "reebkit/io/psb_classes.h"
 #include "reebkit/pipeline/analyze_mesh.h"
+#include "reebkit/store/collection_file.h"
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,6 +56,32 @@ struct ExtractionSummary {
 /// The analysis options as one-line JSON text, for the file's provenance.
 std::string analysis_options_json(const AnalysisOptions& options);
 
+/// What a file indexed with `options` and `classes` says of where it came
+/// from (no creation time: the writer stamps it).
+Provenance extraction_provenance(const std::vector<PsbClass>& classes, const ExtractionOptions& options);
+
+/// FNV-1a 64 content hash of the input's file (content_hash), 0 for a file
+/// that cannot be read (load_mesh then reports why).
+std::uint64_t input_hash(const MeshInput& input);
+/// input_hash of every input, read by `threads` threads.
+std::vector<std::uint64_t> hash_inputs(const std::vector<MeshInput>& inputs, int threads);
+
+/// Everything extract_collection checks before any mesh is read: the
+/// options, the output (check_output_file: its folder exists and is
+/// writable, it is none of the inputs nor the classes file) and that
+/// `classes`, when given, name at least one input. Throws InvalidArgument.
+void check_extraction(const std::vector<MeshInput>& inputs, const std::vector<PsbClass>& classes,
+                      const std::filesystem::path& output, const ExtractionOptions& options);
+
+/// Throws Error, naming the file `path` (whose provenance is `indexed`) and
+/// each differing option with both values, unless it was analysed with
+/// `analysis`: a file is resumed only with its own analysis options.
+void refuse_other_analysis(const std::filesystem::path& path, const Provenance& indexed,
+                           const AnalysisOptions& analysis);
+
+/// Whether `path` opens as a collection file (CollectionReader).
+bool opens_as_collection(const std::filesystem::path& path);
+
 /// Indexes `inputs` into the collection file `output`: per mesh, load_mesh
 /// (largest component), analyze_mesh, compute_attributes and
 /// make_graph_record, with its class in `classes` (class_of) and the
@@ -92,5 +121,25 @@ std::string analysis_options_json(const AnalysisOptions& options);
 /// message then says which file holds the entries of the last checkpoint).
 ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const std::vector<PsbClass>& classes,
                                      const std::filesystem::path& output, const ExtractionOptions& options = {});
+
+
+/// The next input to compute (an index into the inputs), or none when the
+/// job has no input left.
+using InputClaim = std::function<std::optional<std::size_t>()>;
+
+/// One process's part of an extraction shared by several processes (reeb
+/// index under MPI: docs/cluster.md). The workers (options.threads) take
+/// the inputs `claim` hands out, which it is asked for one at a time (never
+/// concurrently), until it returns none; each mesh is computed as
+/// extract_collection computes it (its content hash included) and appended
+/// to the collection file `shard` in the order claimed, with checkpoints as
+/// in extract_collection. The shard keeps the entries it already holds (a
+/// killed process's shard is resumed). Nothing is checked nor locked here:
+/// the process that hands the inputs out does that for the whole job
+/// (shard_merge.h). Throws Error when the shard cannot be written, and what
+/// `claim` throws.
+ExtractionSummary extract_shard(const std::vector<MeshInput>& inputs, const std::vector<PsbClass>& classes,
+                                const std::filesystem::path& shard, const InputClaim& claim,
+                                const ExtractionOptions& options);
 
 }  // namespace reebkit

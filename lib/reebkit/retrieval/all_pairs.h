@@ -41,12 +41,37 @@ struct PairwiseDistances {
 /// number of threads. Throws InvalidArgument on threads < 0.
 PairwiseDistances all_pairs_distances(const std::vector<GraphRecord>& entries, const AllPairsOptions& options = {});
 
+/// Row i of the upper triangle of an n x n matrix holds the pairs (i, j),
+/// j in (i, n): n - 1 - i of them. Splits rows [0, n) into `parts`
+/// consecutive blocks holding about n (n - 1) / (2 parts) pairs each (equal
+/// row counts would not balance them): block b is rows [first[b],
+/// first[b + 1]); first has parts + 1 elements, first[0] = 0, first[parts]
+/// = n. Throws InvalidArgument on n < 0 or parts < 1.
+std::vector<std::int64_t> balanced_row_blocks(std::int64_t n, int parts);
+
+/// The distances of the upper-triangle rows [first, last) of the matrix of
+/// `entries` (all_pairs_distances), row after row: (first, first + 1),
+/// (first, first + 2), ..., (first, n - 1), (first + 1, first + 2), ...
+/// Each pair is computed as all_pairs_distances computes it, so blocks
+/// computed apart (by the processes of an MPI job) assemble into the same
+/// matrix bit for bit (matrix_from_upper_triangle). Throws InvalidArgument
+/// on threads < 0 or rows out of range.
+std::vector<double> upper_triangle_rows(const std::vector<GraphRecord>& entries, std::int64_t first,
+                                        std::int64_t last, const AllPairsOptions& options = {});
+
+/// The symmetric matrix, zero diagonal, of the whole upper triangle
+/// `upper` (rows [0, names.size()) as upper_triangle_rows orders them).
+PairwiseDistances matrix_from_upper_triangle(std::vector<std::string> names, const std::vector<double>& upper);
+
 /// The rows of the matrix of a collection: every entry in collection order,
 /// or, given the classes of a .cla file, one row per model of the file in
 /// its order (the entry found as class_of finds it: by name, by name
 /// without extension, by file name without extension). Throws Error naming
 /// the model when a model of the file has no entry, or two models the same.
 std::vector<std::int64_t> matrix_rows(const CollectionReader& collection, const std::vector<PsbClass>& classes = {});
+
+/// The entries `rows` of `collection` (read once), in the order of `rows`.
+std::vector<GraphRecord> matrix_entries(const CollectionReader& collection, const std::vector<std::int64_t>& rows);
 
 /// The entries `rows` of `collection` (read once) and their all-pairs
 /// distances, rows and columns in the order of `rows`.

@@ -646,6 +646,7 @@ CollectionReader::CollectionReader(CollectionReader&&) noexcept = default;
 std::int64_t CollectionReader::size() const { return impl_->snapshot.size; }
 const std::vector<std::string>& CollectionReader::names() const { return impl_->snapshot.names; }
 const std::vector<std::string>& CollectionReader::class_labels() const { return impl_->snapshot.class_labels; }
+const std::vector<std::uint64_t>& CollectionReader::content_hashes() const { return impl_->snapshot.hashes; }
 const std::vector<double>& CollectionReader::signatures() const { return impl_->snapshot.signatures; }
 const Provenance& CollectionReader::provenance() const { return impl_->snapshot.provenance; }
 

@@ -91,6 +91,8 @@ class CollectionReader {
   std::int64_t size() const;
   const std::vector<std::string>& names() const;
   const std::vector<std::string>& class_labels() const;
+  /// The entries' content hashes (what resume compares).
+  const std::vector<std::uint64_t>& content_hashes() const;
   /// size() x kSignatureLength, row-major.
   const std::vector<double>& signatures() const;
   /// Index of the entry called `name`, if any.
