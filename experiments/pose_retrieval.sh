@@ -22,41 +22,22 @@
 # derived from academic-use data: they stay in BUILD_DIR/pose_retrieval/ and
 # are never committed. THREADS (default 2) sets the threads of every step.
 set -euo pipefail
+# shellcheck source=experiments/common.sh
+source "$(dirname "$0")/common.sh"
 
-if [ $# -lt 1 ] || [ $# -gt 2 ]; then
-  echo "usage: $0 BUILD_DIR [REPORT_DIR]" >&2
-  exit 2
-fi
-build=$(cd "$1" && pwd)
-source_dir=$(cd "$(dirname "$0")/.." && pwd)
-report=${2:-$source_dir/results/pose}
-threads=${THREADS:-2}
+experiment_arguments results/pose "$@"
 poses=${POSES:-2}
 tosca=$build/data/tosca_dev
 shrec=$build/data/shrec07_watertight
 shrec_cla=$shrec/shrec07_watertight.cla
 work=$build/pose_retrieval
-reeb=$build/tools/reeb
-baselines=$build/experiments/baselines
 articulated="Human Ant Octopus Teddy Hand Armadillo Fourleg"
 tosca_classes="cat centaur dog horse michael"
 
-for f in "$reeb" "$baselines"; do
-  [ -x "$f" ] || { echo "$0: $f is missing: build the targets reeb and baselines" >&2; exit 1; }
-done
-for f in "$tosca/cat0.off" "$shrec_cla"; do
-  [ -f "$f" ] || { echo "$0: $f is missing: run ctest --test-dir $build -R unpack_datasets" >&2; exit 1; }
-done
+require_built "$reeb" "$baselines"
+require_unpacked "$tosca/cat0.off" "$shrec_cla"
 rm -rf "$work"
 mkdir -p "$work/tosca" "$work/shrec07-pose/meshes" "$work/shrec07-pose/correspondence" "$report"
-
-step() {  # step NAME COMMAND...: runs it and says how long it took
-  local name=$1 start=$SECONDS
-  shift
-  echo "== $name"
-  "$@"
-  echo "== $name: $((SECONDS - start)) s"
-}
 
 # tosca_classes_file OUT: the PSB class file of the TOSCA meshes, a class per
 # file name prefix (dog.off and dog0.off .. dog7.off are "dog").
@@ -102,12 +83,7 @@ shrec07_pose_collection() {
 # evaluate NAME MESH_DIR CLA: index, all-pairs distances, baselines, report.
 evaluate() {
   local name=$1 meshes=$2 cla=$3 out=$work/$1
-  step "$name: index into attributed Reeb graphs" \
-    "$reeb" index "$meshes" -o "$out/$name.h5" --classes "$cla" --threads "$threads"
-  step "$name: reebkit all-pairs graph matching distances" \
-    "$reeb" distances "$out/$name.h5" -o "$out/reebkit.matrix" --cla "$cla" --threads "$threads"
-  step "$name: baselines: D2, geodesic histogram and Shape-DNA distances" \
-    env OMP_NUM_THREADS="$threads" "$baselines" "$meshes" "$cla" "$out/baseline"
+  all_distances "$name" "$meshes" "$cla" "$out"
   step "$name: evaluation report" \
     "$reeb" eval "$out/reebkit.matrix" --name reebkit --cla "$cla" -o "$report/$name" \
       --compare "$out/baseline-shape-dna.matrix:Shape-DNA" "$out/baseline-geodesic.matrix:geodesic-histogram" \
