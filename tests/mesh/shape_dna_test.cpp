@@ -133,6 +133,26 @@ TEST(ShapeDna, BoundaryGivesTheNeumannSpectrum) {
   EXPECT_LT(fine, 0.015);
 }
 
+// Bending without stretching keeps the spectrum (an isometry invariant): the
+// unit square rolled into half a cylinder (radius 1 / pi) against the flat
+// one; the polygonal arc's chords make the difference O(h^2).
+TEST(ShapeDna, IsometricBendingKeepsTheSpectrum) {
+  std::vector<double> differences;
+  for (const int n : {16, 32}) {
+    const Mesh flat = make_grid(n, n, 1.0 / n);
+    Mesh rolled = flat;
+    for (Index v = 0; v < rolled.num_vertices(); ++v) {
+      const double x = flat.vertices(v, 0);
+      rolled.vertices.row(v) = Vec3(std::sin(kPi * x) / kPi, flat.vertices(v, 1), (1 - std::cos(kPi * x)) / kPi);
+    }
+    ShapeDnaOptions options;
+    options.eigenvalues = 20;
+    differences.push_back(max_relative_error(shape_dna(rolled, options).eigenvalues, shape_dna(flat, options).eigenvalues));
+  }
+  EXPECT_LT(differences[0], 0.01);
+  EXPECT_LT(differences[1], differences[0] / 3) << differences[0] << " then " << differences[1];
+}
+
 /// `mesh` with its vertices and triangles in a random order, and each
 /// triangle's corners rotated.
 Mesh renumbered(const Mesh& mesh, std::uint64_t seed) {
