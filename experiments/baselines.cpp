@@ -1,4 +1,4 @@
-// Two baseline shape descriptors for retrieval, to stand next to reebkit's
+// Three baseline shape descriptors for retrieval, to stand next to reebkit's
 // graph matching in the same evaluation (reeb eval):
 //  - D2, the shape distribution of Osada, Funkhouser, Chazelle and Dobkin
 //    ("Shape distributions", ACM TOG 2002): the histogram of Euclidean
@@ -7,15 +7,20 @@
 //  - a geodesic distance histogram, invariant to isometric bending: the
 //    area-weighted histogram of the geodesic distances (Dijkstra on the mesh
 //    graph) from farthest-point-sampled sources to every vertex, divided by
-//    the largest of them (the geodesic diameter, approximately).
-// Descriptors are compared with the L1 distance. Writes one PSB binary
+//    the largest of them (the geodesic diameter, approximately);
+//  - Shape-DNA (Reuter, Wolter and Peinecke, CAD 2006): the first 50
+//    eigenvalues of the Laplace-Beltrami operator normalized by the area
+//    (mesh/shape_dna.h), an isometry invariant.
+// Histograms are compared with the L1 distance, Shape-DNAs with
+// shape_dna_distance. Writes one PSB binary
 // .matrix per method, rows in .cla order, and prints each method's nearest
 // neighbour rate (query left out, ties to the lower index, classes of fewer
 // than 3 models not queried, as reeb eval).
 //
 //   D=build/data/shrec07_watertight
 //   build/experiments/baselines $D $D/shrec07_watertight.cla /tmp/out/shrec07
-//   -> /tmp/out/shrec07-d2.matrix, /tmp/out/shrec07-geodesic.matrix
+//   -> /tmp/out/shrec07-d2.matrix, /tmp/out/shrec07-geodesic.matrix,
+//      /tmp/out/shrec07-shape-dna.matrix
 #include "reebkit/collection/mesh_inputs.h"
 #include "reebkit/core/error.h"
 #include "reebkit/evaluation/distance_matrix.h"
@@ -23,12 +28,14 @@
 #include "reebkit/io/psb_classes.h"
 #include "reebkit/mesh/load_mesh.h"
 #include "reebkit/mesh/mesh_graph.h"
+#include "reebkit/mesh/shape_dna.h"
 #include "reebkit/mesh/surface_sampling.h"
 
 #include <omp.h>
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <string>
@@ -100,16 +107,17 @@ Histogram geodesic(const Mesh& m) {
   return normalized(h);
 }
 
-reebkit::DistanceMatrix l1_distances(const std::vector<Histogram>& h) {
-  const Index n = static_cast<Index>(h.size());
+double l1_distance(const Histogram& a, const Histogram& b) {
+  double sum = 0;
+  for (std::size_t k = 0; k < a.size(); ++k) sum += std::abs(a[k] - b[k]);
+  return sum;
+}
+
+/// The n x n matrix of distance(i, j).
+reebkit::DistanceMatrix all_pairs(Index n, const std::function<double(std::size_t, std::size_t)>& distance) {
   reebkit::DistanceMatrix d(n, n);
   for (Index i = 0; i < n; ++i)
-    for (Index j = 0; j < n; ++j) {
-      double sum = 0;
-      for (int b = 0; b < kBins; ++b) sum += std::abs(h[static_cast<std::size_t>(i)][static_cast<std::size_t>(b)] -
-                                                       h[static_cast<std::size_t>(j)][static_cast<std::size_t>(b)]);
-      d(i, j) = static_cast<float>(sum);
-    }
+    for (Index j = 0; j < n; ++j) d(i, j) = static_cast<float>(distance(static_cast<std::size_t>(i), static_cast<std::size_t>(j)));
   return d;
 }
 
@@ -134,7 +142,7 @@ double nearest_neighbor_rate(const reebkit::DistanceMatrix& d, const std::vector
 int main(int argc, char** argv) {
   if (argc != 4) {
     std::cerr << "usage: baselines MESH_DIR CLASSES.cla OUT_PREFIX   (writes OUT_PREFIX-d2.matrix, "
-                 "OUT_PREFIX-geodesic.matrix; threads: OMP_NUM_THREADS)\n";
+                 "OUT_PREFIX-geodesic.matrix, OUT_PREFIX-shape-dna.matrix; threads: OMP_NUM_THREADS)\n";
     return 2;
   }
   try {
@@ -156,7 +164,8 @@ int main(int argc, char** argv) {
     }
     const Index n = static_cast<Index>(files.size());
     std::vector<Histogram> d2_histograms(files.size()), geodesic_histograms(files.size());
-    std::vector<double> d2_ms(files.size()), geodesic_ms(files.size());
+    std::vector<reebkit::ShapeDna> spectra(files.size());
+    std::vector<double> d2_ms(files.size()), geodesic_ms(files.size()), shape_dna_ms(files.size());
 #pragma omp parallel for schedule(dynamic)
     for (Index i = 0; i < n; ++i) {
       const auto k = static_cast<std::size_t>(i);
@@ -167,11 +176,22 @@ int main(int argc, char** argv) {
       t = omp_get_wtime();
       geodesic_histograms[k] = geodesic(mesh);
       geodesic_ms[k] = 1e3 * (omp_get_wtime() - t);
+      t = omp_get_wtime();
+      spectra[k] = reebkit::shape_dna(mesh);
+      shape_dna_ms[k] = 1e3 * (omp_get_wtime() - t);
     }
     const std::string prefix = argv[3];
-    for (const auto& [method, histograms, ms] :
-         {std::tuple{"d2", &d2_histograms, &d2_ms}, std::tuple{"geodesic", &geodesic_histograms, &geodesic_ms}}) {
-      const reebkit::DistanceMatrix d = l1_distances(*histograms);
+    const auto l1_of = [](const std::vector<Histogram>& h) {
+      return [&h](std::size_t i, std::size_t j) { return l1_distance(h[i], h[j]); };
+    };
+    const auto shape_dna_of = [&spectra](std::size_t i, std::size_t j) {
+      return reebkit::shape_dna_distance(spectra[i], spectra[j]);
+    };
+    using Distance = std::function<double(std::size_t, std::size_t)>;
+    for (const auto& [method, distance, ms] : {std::tuple{"d2", Distance(l1_of(d2_histograms)), &d2_ms},
+                                               std::tuple{"geodesic", Distance(l1_of(geodesic_histograms)), &geodesic_ms},
+                                               std::tuple{"shape-dna", Distance(shape_dna_of), &shape_dna_ms}}) {
+      const reebkit::DistanceMatrix d = all_pairs(n, distance);
       reebkit::write_psb_matrix(prefix + "-" + method + ".matrix", d);
       double total_ms = 0;
       for (const double x : *ms) total_ms += x;

@@ -1,0 +1,63 @@
+# What the retrieval experiment scripts share; sourced, never run:
+#   source "$(dirname "$0")/common.sh"
+#   experiment_arguments results/NAME "$@"
+
+# experiment_arguments DEFAULT_REPORT BUILD_DIR [REPORT_DIR]: sets build (the
+# build folder, absolute), source_dir (the checkout), report (REPORT_DIR, or
+# DEFAULT_REPORT under the checkout), threads (THREADS, default 2) and the
+# programs reeb and baselines of the build; prints the usage and exits on a
+# wrong argument count.
+experiment_arguments() {
+  local default=$1
+  shift
+  if [ $# -lt 1 ] || [ $# -gt 2 ]; then
+    echo "usage: $0 BUILD_DIR [REPORT_DIR]" >&2
+    exit 2
+  fi
+  build=$(cd "$1" && pwd)
+  source_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+  report=${2:-$source_dir/$default}
+  threads=${THREADS:-2}
+  reeb=$build/tools/reeb
+  baselines=$build/experiments/baselines
+}
+
+# require_built FILE...: exits naming the first program not built.
+require_built() {
+  local f
+  for f; do
+    [ -x "$f" ] || { echo "$0: $f is missing: build the target $(basename "$f")" >&2; exit 1; }
+  done
+}
+
+# require_unpacked FILE...: exits naming the first dataset file not unpacked.
+require_unpacked() {
+  local f
+  for f; do
+    [ -e "$f" ] || { echo "$0: $f is missing: run ctest --test-dir $build -R unpack_datasets" >&2; exit 1; }
+  done
+}
+
+# step NAME COMMAND...: runs it and says how long it took.
+step() {
+  local name=$1 start=$SECONDS
+  shift
+  echo "== $name"
+  "$@"
+  echo "== $name: $((SECONDS - start)) s"
+}
+
+# all_distances NAME MESH_DIR CLA OUT: indexes MESH_DIR (classes CLA) into
+# OUT/NAME.h5 and writes the all-pairs distances, rows in CLA order, of
+# reebkit's graph matching (OUT/reebkit.matrix) and of the baselines
+# (OUT/baseline-d2.matrix, -geodesic, -shape-dna). Uses $reeb, $baselines
+# and $threads.
+all_distances() {
+  local name=$1 meshes=$2 cla=$3 out=$4
+  step "$name: index into attributed Reeb graphs" \
+    "$reeb" index "$meshes" -o "$out/$name.h5" --classes "$cla" --threads "$threads"
+  step "$name: reebkit all-pairs graph matching distances" \
+    "$reeb" distances "$out/$name.h5" -o "$out/reebkit.matrix" --cla "$cla" --threads "$threads"
+  step "$name: baselines: D2, geodesic histogram and Shape-DNA distances" \
+    env OMP_NUM_THREADS="$threads" "$baselines" "$meshes" "$cla" "$out/baseline"
+}

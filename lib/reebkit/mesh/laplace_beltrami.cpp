@@ -1,0 +1,57 @@
+#include "reebkit/mesh/laplace_beltrami.h"
+
+#include "reebkit/core/error.h"
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+namespace reebkit {
+
+LaplaceBeltrami laplace_beltrami(const Mesh& mesh, const LaplaceBeltramiOptions& options) {
+  const std::string source = mesh.source.empty() ? "mesh" : mesh.source;
+  if (mesh.num_triangles() == 0) throw InvalidMeshError(source, "no triangle: no Laplace-Beltrami operator");
+  using Triplet = Eigen::Triplet<double>;
+  std::vector<Triplet> stiffness, mass;
+  stiffness.reserve(static_cast<std::size_t>(mesh.num_triangles()) * 9);
+  mass.reserve(static_cast<std::size_t>(mesh.num_triangles()) * 9);
+  for (Index t = 0; t < mesh.num_triangles(); ++t) {
+    const Index v[3] = {mesh.triangles(t, 0), mesh.triangles(t, 1), mesh.triangles(t, 2)};
+    const Vec3 p[3] = {mesh.vertices.row(v[0]), mesh.vertices.row(v[1]), mesh.vertices.row(v[2])};
+    const double twice_area = (p[1] - p[0]).cross(p[2] - p[0]).norm();
+    const double longest = std::max({(p[1] - p[0]).squaredNorm(), (p[2] - p[1]).squaredNorm(),
+                                      (p[0] - p[2]).squaredNorm()});
+    if (!(twice_area > 1e-12 * longest))
+      throw InvalidMeshError(source, "triangle " + std::to_string(t) +
+                                         " has zero area: its cotangents, and the Laplace-Beltrami operator, are "
+                                         "undefined");
+    for (int k = 0; k < 3; ++k) {
+      // The angle at corner k is opposite the edge (i, j); its cotangent is
+      // dot / |cross| of the two edge vectors leaving the corner, and
+      // |cross| = twice the area for every corner.
+      const int i = (k + 1) % 3, j = (k + 2) % 3;
+      const double half_cot = 0.5 * (p[i] - p[k]).dot(p[j] - p[k]) / twice_area;
+      stiffness.emplace_back(v[i], v[j], -half_cot);
+      stiffness.emplace_back(v[j], v[i], -half_cot);
+      stiffness.emplace_back(v[i], v[i], half_cot);
+      stiffness.emplace_back(v[j], v[j], half_cot);
+    }
+    const double area = 0.5 * twice_area;
+    for (int a = 0; a < 3; ++a) {
+      if (options.mass == MassMatrix::lumped) {
+        mass.emplace_back(v[a], v[a], area / 3);
+        continue;
+      }
+      for (int b = 0; b < 3; ++b) mass.emplace_back(v[a], v[b], area / (a == b ? 6 : 12));
+    }
+  }
+  const Eigen::Index n = mesh.num_vertices();
+  LaplaceBeltrami result;
+  result.stiffness.resize(n, n);
+  result.stiffness.setFromTriplets(stiffness.begin(), stiffness.end());
+  result.mass.resize(n, n);
+  result.mass.setFromTriplets(mass.begin(), mass.end());
+  return result;
+}
+
+}  // namespace reebkit

@@ -1,0 +1,55 @@
+// The Laplace-Beltrami operator of a triangle mesh discretized by linear
+// finite elements: the cotangent stiffness matrix and the mass matrix of the
+// weak eigenproblem  L phi = lambda M phi  (Reuter, Wolter and Peinecke,
+// "Laplace-Beltrami spectra as 'Shape-DNA' of surfaces and solids", CAD 38(4),
+// 2006, section 4: the Ritz-Galerkin system of the variational form, here with
+// piecewise linear elements; Pinkall and Polthier, "Computing discrete
+// minimal surfaces and their conjugates", Experimental Mathematics 2(1), 1993,
+// for the cotangent form of the linear stiffness matrix). The spectrum is the
+// Shape-DNA baseline of shape_dna.h.
+//
+// Without boundary conditions imposed the discretization is that of the
+// Neumann problem, so meshes with holes need no special case.
+#pragma once
+
+#include "reebkit/core/mesh.h"
+
+#include <Eigen/SparseCore>
+
+namespace reebkit {
+
+/// The mass matrix of the linear elements.
+enum class MassMatrix {
+  /// The exact integrals of the hat functions, area/12 x [2 1 1; 1 2 1; 1 1 2]
+  /// per triangle (Reuter et al. 2006's Galerkin mass matrix, with linear
+  /// elements): Rayleigh-Ritz, so every eigenvalue is an upper bound of the
+  /// smooth surface's one (min-max principle).
+  consistent,
+  /// Row sums of the consistent matrix, a third of the area of the incident
+  /// triangles on the diagonal: diagonal, cheaper, no bound.
+  lumped,
+};
+
+struct LaplaceBeltramiOptions {
+  MassMatrix mass = MassMatrix::consistent;  ///< see MassMatrix
+};
+
+/// The stiffness and mass matrices, #V x #V, symmetric, both full (upper and
+/// lower triangles stored). stiffness(i, j) = -(cot a_ij + cot b_ij) / 2 for
+/// an edge ij opposite the angles a_ij and b_ij (one angle on a boundary
+/// edge), the diagonal the negated off-diagonal row sum: positive
+/// semi-definite with the constants as its kernel on a connected mesh. mass
+/// is positive definite. Both scale as the mesh does: the stiffness not at
+/// all, the mass with the area.
+struct LaplaceBeltrami {
+  Eigen::SparseMatrix<double> stiffness;
+  Eigen::SparseMatrix<double> mass;
+};
+
+/// The matrices of `mesh`. Throws InvalidMeshError naming mesh.source when
+/// the mesh has no triangle or a triangle of zero area (to rounding: twice
+/// its area at most 1e-12 of its longest edge squared), whose cotangents are
+/// undefined.
+LaplaceBeltrami laplace_beltrami(const Mesh& mesh, const LaplaceBeltramiOptions& options = {});
+
+}  // namespace reebkit
