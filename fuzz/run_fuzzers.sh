@@ -15,6 +15,7 @@ seconds=${2:-30}
 jobs=${JOBS:-$(nproc)}
 readers=(off obj ply stl classes psbmatrix shrecmatrix collection)
 
+start=$SECONDS
 echo "== configure ($build: clang, libFuzzer, AddressSanitizer + UndefinedBehaviorSanitizer)"
 CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DREEBKIT_FUZZ=ON \
   -DREEBKIT_WARNINGS_AS_ERRORS=ON -DREEBKIT_BUILD_TESTS=OFF -DREEBKIT_BUILD_BENCH=OFF \
@@ -23,6 +24,8 @@ CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebI
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
 echo "== build (-j$jobs)"
 cmake --build "$build" -j "$jobs" --target reeb "${readers[@]/#/fuzz_}"
+echo "== the fuzz build took $((SECONDS - start)) s"
+start=$SECONDS
 
 mkdir -p "$build/artifacts"
 for reader in "${readers[@]}"; do
@@ -40,4 +43,4 @@ for reader in "${readers[@]}"; do
   grep -E "stat::number_of_executed_units|stat::new_units_added" "$build/fuzz_$reader.log" | tr '\n' ' '
   echo
 done
-echo "== fuzzing: no crash in ${#readers[@]} targets x $seconds s"
+echo "== fuzzing: no crash in ${#readers[@]} targets x $seconds s; took $((SECONDS - start)) s"
