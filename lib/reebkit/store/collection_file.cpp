@@ -178,7 +178,6 @@ struct Table {
     read(out.data(), first, n);
     return out;
   }
-
 };
 
 /// Offsets read from the file, checked before they size anything: they never
@@ -253,12 +252,16 @@ void write_string_attribute(H5::H5Object& object, const char* name, const std::s
   write_text_attribute(object, name, {value}, true);
 }
 
+/// The value of a scalar string attribute.
+std::string read_one_text(const H5::Attribute& attribute) {
+  std::vector<std::string> values = read_text_attribute(attribute);
+  if (values.size() != 1) throw H5::AttributeIException("read", attribute.getName() + " is not one string");
+  return std::move(values.front());
+}
+
 /// A scalar string attribute; "" when there is none.
 std::string read_string_attribute(const H5::H5Object& object, const char* name) {
-  if (!object.attrExists(name)) return {};
-  const std::vector<std::string> values = read_text_attribute(object.openAttribute(name));
-  if (values.size() != 1) throw H5::AttributeIException("read", std::string(name) + " is not one string");
-  return values.front();
+  return object.attrExists(name) ? read_one_text(object.openAttribute(name)) : std::string();
 }
 
 /// A named option as a typed scalar attribute of `group`: int64, float64 or a UTF-8 string.
@@ -304,12 +307,9 @@ std::vector<NamedOption> read_option_attributes(const H5::H5File& file, const ch
         option.value = value;
         break;
       }
-      case H5T_STRING: {
-        const std::vector<std::string> values = read_text_attribute(attribute);
-        if (values.size() != 1) throw H5::AttributeIException("read_option_attributes", option.name + " is not one string");
-        option.value = values.front();
+      case H5T_STRING:
+        option.value = read_one_text(attribute);
         break;
-      }
       default:
         throw H5::AttributeIException("read_option_attributes", std::string(name) + "/" + option.name +
                                                                     " is not an integer, a number or a string");
