@@ -2,7 +2,8 @@
 # Builds the libFuzzer targets (fuzz/CMakeLists.txt) with clang, AddressSanitizer
 # and UndefinedBehaviorSanitizer into BUILD_DIR, and runs each for SECONDS on a
 # copy of its committed seed corpus (fuzz/corpus/<reader>; the collection
-# seed is indexed from datasets/eight.off by the same build). A crash, leak,
+# seed is indexed from datasets/eight.off by the program REEB names, else by
+# this build's reeb: tools/run check passes its sanitized build's). A crash, leak,
 # sanitizer report, timeout (10 s per input) or out-of-memory (2 GiB) stops the
 # run with exit 1 and leaves the input in BUILD_DIR/artifacts/: turn it into a
 # regression test. `bash tools/run check` calls this after the sanitized suite.
@@ -15,22 +16,29 @@ seconds=${2:-30}
 jobs=${JOBS:-$(nproc)}
 readers=(off obj ply stl classes psbmatrix shrecmatrix collection)
 
+start=$SECONDS
 echo "== configure ($build: clang, libFuzzer, AddressSanitizer + UndefinedBehaviorSanitizer)"
-CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DREEBKIT_FUZZ=ON \
+CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" -DREEBKIT_FUZZ=ON \
   -DREEBKIT_WARNINGS_AS_ERRORS=ON -DREEBKIT_BUILD_TESTS=OFF -DREEBKIT_BUILD_BENCH=OFF \
   -DREEBKIT_BUILD_EXPERIMENTS=OFF \
   -DCMAKE_CXX_FLAGS="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
 echo "== build (-j$jobs)"
-cmake --build "$build" -j "$jobs" --target reeb "${readers[@]/#/fuzz_}"
+targets=("${readers[@]/#/fuzz_}")
+[ -n "${REEB:-}" ] || targets+=(reeb)
+reeb=${REEB:-$build/tools/reeb}
+cmake --build "$build" -j "$jobs" --target "${targets[@]}"
+echo "== the fuzz build took $((SECONDS - start)) s"
+start=$SECONDS
 
 mkdir -p "$build/artifacts"
 for reader in "${readers[@]}"; do
   corpus=$build/corpus/$reader
   mkdir -p "$corpus"
   cp -n "$root/fuzz/corpus/$reader"/* "$corpus/" 2>/dev/null || true
-  if [ "$reader" = collection ] && [ ! -f "$corpus/eight.h5" ]; then
-    ASAN_OPTIONS=detect_leaks=0 "$build/tools/reeb" index "$root/datasets/eight.off" -o "$corpus/eight.h5" \
+  if [ "$reader" = collection ]; then  # indexed anew: a seed of an older layout is only refused
+    ASAN_OPTIONS=detect_leaks=0 "$reeb" index "$root/datasets/eight.off" -o "$corpus/eight.h5" \
       --threads 1 >/dev/null
   fi
   echo "== fuzz_$reader: $seconds s"
@@ -40,4 +48,4 @@ for reader in "${readers[@]}"; do
   grep -E "stat::number_of_executed_units|stat::new_units_added" "$build/fuzz_$reader.log" | tr '\n' ' '
   echo
 done
-echo "== fuzzing: no crash in ${#readers[@]} targets x $seconds s"
+echo "== fuzzing: no crash in ${#readers[@]} targets x $seconds s; took $((SECONDS - start)) s"

@@ -50,6 +50,13 @@ TEST(ReebIndexCli, IndexInfoExportOnTheEmbeddedCollection) {
   EXPECT_NE(index_out.find(std::to_string(meshes) + " meshes: " + std::to_string(meshes) + " ok, 0 failed"),
             std::string::npos)
       << index_out;
+  // Progress into a pipe (as into a log file or CI): whole lines, no
+  // carriage returns or terminal escapes, the last one at the last mesh.
+  EXPECT_NE(index_out.find("indexed " + std::to_string(meshes) + "/" + std::to_string(meshes) + " "),
+            std::string::npos)
+      << index_out;
+  EXPECT_EQ(index_out.find('\r'), std::string::npos) << index_out;
+  EXPECT_EQ(index_out.find('\033'), std::string::npos) << index_out;
 
   const auto [info_status, info] = run_command(reeb + " info " + shell_quoted(dir / "c.h5"));
   ASSERT_EQ(info_status, 0) << info;

@@ -298,24 +298,33 @@ out = sys.stdout.buffer
 def emit(key, values):
     out.write(("\t".join([key] + [repr(v) if isinstance(v, float) else str(v) for v in values]) + "\n").encode())
 
+def text(f, key, G):                            # a text column: UTF-8 bytes + offsets
+    offset = f[key + "_offset"][:G + 1]
+    data = f[key][:offset[G]].tobytes()
+    return [data[offset[i]:offset[i + 1]].decode() for i in range(G)]
+
+def decode(value):                              # string attributes are fixed-length UTF-8 bytes
+    if isinstance(value, bytes):
+        return value.decode()
+    return [v.decode() for v in value] if isinstance(value, np.ndarray) and value.dtype.kind == "S" else value
+
 # swmr=True also opens a file whose writer was killed (README).
 with h5py.File(sys.argv[1], "r", libver="latest", swmr=True) as f:
     G = int(f["count"][0])                      # trust only the committed entries
     emit("layout", [int(f.attrs["layout"])])
-    emit("command", [f.attrs["command"]])
+    emit("command", [f.attrs["command"].decode()])
     for key, value in sorted(f["analysis_options"].attrs.items()):
-        emit("analysis_options/" + key, [type(value.item() if hasattr(value, "item") else value).__name__, value])
-    classes = f["classes"].attrs
+        value = decode(value.item() if hasattr(value, "item") else value)
+        emit("analysis_options/" + key, [type(value).__name__, value])
+    classes = {key: decode(value) for key, value in f["classes"].attrs.items()}
     offset, model = classes["model_offset"], classes["model"]
     for c, name in enumerate(classes["name"]):
         emit("classes/" + name, [classes["parent"][c]] + list(model[offset[c]:offset[c + 1]]))
     emit("classes_file", [classes["file"]])
     emit("count", [G])
     for key in ("timings", "signature", "nodes", "node_geometry", "node_attr", "edges", "edge_attr", "skeleton_points"):
-        emit("columns/" + key, [c.decode() if isinstance(c, bytes) else c for c in f[key].attrs["columns"]])
-    name = f["name"].asstr()[:G]
-    cls = f["class"].asstr()[:G]
-    error = f["error"].asstr()[:G]
+        emit("columns/" + key, decode(f[key].attrs["columns"]))
+    name, cls, error = (text(f, key, G) for key in ("name", "class", "error"))
     status, hashes = f["status"][:G], f["content_hash"][:G]
     vertices, faces, timings, signature = f["vertices"][:G], f["faces"][:G], f["timings"][:G], f["signature"][:G]
     node_offset, edge_offset, feature_offset = (f[k][:G + 1] for k in ("node_offset", "edge_offset", "feature_offset"))
@@ -430,7 +439,7 @@ TEST(CollectionFile, PythonReadsItWithH5pyAndNumpy) {
   const auto fields = read_with_python(dir / "c.h5");
   EXPECT_EQ(fields.at("layout"), std::vector<std::string>{std::to_string(kCollectionLayoutVersion)});
   EXPECT_EQ(fields.at("command"), std::vector<std::string>{test_provenance().command});
-  // Typed analysis options: h5py gives Python's float, int and str.
+  // Typed analysis options: h5py gives float, int and (fixed-length strings) bytes, decoded to str.
   EXPECT_EQ(fields.at("analysis_options/epsilon"), (std::vector<std::string>{"float", "0.05"}));
   EXPECT_EQ(fields.at("analysis_options/geodesic"), (std::vector<std::string>{"str", "fmm"}));
   EXPECT_EQ(fields.at("analysis_options/start_vertex"), (std::vector<std::string>{"int", "-7"}));
@@ -580,38 +589,55 @@ TEST(CollectionFile, VerbosePrintsTheHdf5ErrorStack) {
   EXPECT_NE(output.find("HDF5-DIAG"), std::string::npos) << output;
 }
 
-/// The byte ranges of HDF5's global heap collections ("GCOL", which hold the
-/// variable-length strings) in the file `bytes`.
-std::vector<std::pair<std::size_t, std::size_t>> global_heaps(const std::string& bytes) {
-  std::vector<std::pair<std::size_t, std::size_t>> heaps;
-  for (auto at = bytes.find("GCOL"); at != std::string::npos && at + 16 <= bytes.size();
-       at = bytes.find("GCOL", at + 1)) {
-    std::uint64_t size = 0;
-    std::memcpy(&size, bytes.data() + at + 8, sizeof size);  // little-endian, after signature, version, reserved
-    heaps.emplace_back(at, at + size);
+/// The byte ranges [first, last) of the chunks of the datasets `names` in
+/// the collection file `path`, as stored (compressed).
+std::vector<std::pair<std::size_t, std::size_t>> chunk_ranges(const std::filesystem::path& path,
+                                                               const std::vector<std::string>& names) {
+  std::vector<std::pair<std::size_t, std::size_t>> ranges;
+  const H5::H5File file(path.string(), H5F_ACC_RDONLY);
+  for (const std::string& name : names) {
+    const H5::DataSet dataset = file.openDataSet(name);
+    const H5::DataSpace space = dataset.getSpace();
+    hsize_t chunks = 0;
+    EXPECT_GE(H5Dget_num_chunks(dataset.getId(), space.getId(), &chunks), 0) << name;
+    for (hsize_t k = 0; k < chunks; ++k) {
+      haddr_t address = 0;
+      hsize_t size = 0;
+      EXPECT_GE(H5Dget_chunk_info(dataset.getId(), space.getId(), k, nullptr, nullptr, &address, &size), 0) << name;
+      ranges.emplace_back(static_cast<std::size_t>(address), static_cast<std::size_t>(address + size));
+    }
   }
-  return heaps;
+  return ranges;
 }
 
-TEST(CollectionFile, AFlippedByteOutsideTheStringHeapIsReadOrAClearError) {
-  // 400 bytes spread over a small collection inverted in turn: the file reads
-  // (the byte was in data no check covers) or throws Error naming the file;
-  // nothing else escapes, nothing hangs. Not covered: HDF5 1.10's global
-  // heap of variable-length strings, which it reads without bounds checks (a
-  // flipped length there crashes or hangs H5HG_read; docs/reliability.md).
+TEST(CollectionFile, AFlippedByteAnywhereIsReadOrAClearError) {
+  // One byte inverted in turn, at 400 places spread over a small collection
+  // and at every byte of the chunks holding its strings and their offsets:
+  // the file reads (the byte was in data no check covers) or throws Error
+  // naming the file; nothing else escapes, nothing crashes, nothing hangs.
+  // Before layout 4 the strings were variable-length, in HDF5's global heap
+  // ("GCOL"), which HDF5 1.10 reads trusting the stored lengths: one flipped
+  // byte there crashed (H5HG_read) or hung the reader.
   const TempDir dir;
   write_entries(dir / "c.h5", 0, 24, false);
   const std::string bytes = read_file_bytes(dir / "c.h5");
-  const auto heaps = global_heaps(bytes);
-  ASSERT_FALSE(heaps.empty());
-  int read = 0, refused = 0;
+  EXPECT_EQ(bytes.find("GCOL"), std::string::npos) << "the file has a global heap";
+  std::set<std::size_t> places;
   const std::size_t step = bytes.size() / 400 + 1;
-  for (std::size_t at = 0; at < bytes.size(); at += step) {
-    const auto in_heap = [&](const auto& heap) { return at >= heap.first && at < heap.second; };
-    if (std::any_of(heaps.begin(), heaps.end(), in_heap)) continue;
+  for (std::size_t at = 0; at < bytes.size(); at += step) places.insert(at);
+  std::size_t text_bytes = 0;
+  for (const auto& [first, last] :
+       chunk_ranges(dir / "c.h5", {"name", "name_offset", "class", "class_offset", "error", "error_offset"})) {
+    ASSERT_LE(last, bytes.size());
+    for (std::size_t at = first; at < last; ++at) places.insert(at);
+    text_bytes += last - first;
+  }
+  EXPECT_GT(text_bytes, 0u);
+  int read = 0, refused = 0;
+  const auto path = dir / "damaged.h5";
+  for (const std::size_t at : places) {
     std::string damaged = bytes;
     damaged[at] = static_cast<char>(~damaged[at]);
-    const auto path = dir / "damaged.h5";
     test::write_bytes(path, damaged);
     try {
       const CollectionReader reader(path);
@@ -623,7 +649,44 @@ TEST(CollectionFile, AFlippedByteOutsideTheStringHeapIsReadOrAClearError) {
     }
   }
   EXPECT_GT(refused, 0);
-  std::printf("%zu bytes, step %zu: %d flipped bytes read, %d refused\n", bytes.size(), step, read, refused);
+  std::printf("%zu bytes (%zu in the chunks of the text columns): %zu flipped in turn, %d read, %d refused\n",
+              bytes.size(), text_bytes, places.size(), read, refused);
+}
+
+TEST(CollectionFile, OffsetsAndCountPastTheDataAreAClearError) {
+  // Offsets are checked before they size anything: a count or an offset
+  // pointing past the rows written is refused naming the file and the dataset.
+  const TempDir dir;
+  const auto damage = [&](const char* dataset, hsize_t row, std::int64_t value) {
+    const auto path = dir / (std::string(dataset) + ".h5");
+    write_entries(path, 0, 5, false);
+    {
+      H5::H5File file(path.string(), H5F_ACC_RDWR);
+      H5::DataSet d = file.openDataSet(dataset);
+      H5::DataSpace space = d.getSpace();
+      const hsize_t one[1] = {1}, at[1] = {row};
+      space.selectHyperslab(H5S_SELECT_SET, one, at);
+      d.write(&value, H5::PredType::NATIVE_INT64, H5::DataSpace(1, one), space);
+    }
+    return test::thrown_message<Error>([&] {
+      const CollectionReader reader(path);
+      (void)reader.entries(0, reader.size());
+    });
+  };
+  for (const std::int64_t count : {std::int64_t{-1}, std::int64_t{6}, std::int64_t{1} << 60}) {
+    const std::string message = damage("count", 0, count);
+    EXPECT_NE(message.find("count.h5"), std::string::npos) << message;
+    EXPECT_NE(message.find("count (" + std::to_string(count) + ") exceeds the rows written"), std::string::npos)
+        << message;
+  }
+  for (const char* offsets : {"name_offset", "class_offset", "error_offset", "node_offset", "skeleton_offset"}) {
+    for (const std::int64_t value : {std::int64_t{-5}, std::int64_t{1} << 50}) {
+      const std::string message = damage(offsets, 3, value);
+      EXPECT_NE(message.find(std::string(offsets) + ".h5"), std::string::npos) << message;
+      EXPECT_NE(message.find(std::string(offsets) + " decreases or points past its data"), std::string::npos)
+          << message;
+    }
+  }
 }
 
 }  // namespace

@@ -59,8 +59,14 @@ constexpr int kDeflateLevel = 4;
 /// this many are pending, so that memory stays bounded between checkpoints.
 constexpr std::size_t kBatchEntries = 256;
 
-H5::StrType utf8_string_type() {
-  H5::StrType type(H5::PredType::C_S1, H5T_VARIABLE);
+/// Fixed-length UTF-8 strings of `width` bytes, padded with NULs: the type
+/// of every string attribute. No string in the file is variable-length:
+/// HDF5 keeps those in its global heap, which HDF5 1.10 reads trusting the
+/// stored lengths (one damaged byte there crashed or hung readers), where
+/// an attribute's bytes sit in its object header, under its checksum.
+H5::StrType text_type(std::size_t width) {
+  H5::StrType type(H5::PredType::C_S1, std::max<std::size_t>(width, 1));
+  type.setStrpad(H5T_STR_NULLPAD);
   type.setCset(H5T_CSET_UTF8);
   return type;
 }
@@ -172,31 +178,90 @@ struct Table {
     read(out.data(), first, n);
     return out;
   }
-
-  std::vector<std::string> read_strings(hsize_t first, hsize_t n) const {
-    if (n == 0) return {};
-    std::vector<char*> raw(static_cast<std::size_t>(n), nullptr);
-    read(raw.data(), first, n);
-    std::vector<std::string> out(raw.begin(), raw.end());
-    const hsize_t count[1] = {n};
-    H5::DataSet::vlenReclaim(raw.data(), type, H5::DataSpace(1, count));
-    return out;
-  }
 };
 
-void write_string_attribute(H5::H5Object& object, const char* name, const std::string& value) {
-  const H5::StrType type = utf8_string_type();
-  H5::Attribute attribute = object.createAttribute(name, type, H5::DataSpace(H5S_SCALAR));
-  const char* text = value.c_str();
-  attribute.write(type, &text);
+/// Offsets read from the file, checked before they size anything: they never
+/// decrease and stay within the `rows` of the data they index.
+void check_offsets(const std::vector<std::int64_t>& offsets, hsize_t rows, const char* name) {
+  if (offsets.empty() || offsets.front() < 0 || !std::is_sorted(offsets.begin(), offsets.end()) ||
+      static_cast<hsize_t>(offsets.back()) > rows)
+    throw H5::DataSetIException("read", std::string(name) + " decreases or points past its data");
 }
 
+/// The strings [first, first + n) of a text column: their UTF-8 bytes one
+/// after the other in `bytes` (uint8), string k ending at row `ends[k]`
+/// (`ends` has one row more: the leading 0).
+std::vector<std::string> read_text(const Table& bytes, const Table& ends, const char* name, hsize_t first, hsize_t n) {
+  const auto offset = ends.read_vector<std::int64_t>(first, n + 1);
+  check_offsets(offset, bytes.rows, name);
+  const auto text = bytes.read_vector<char>(offset.front(), offset.back() - offset.front());
+  std::vector<std::string> out;
+  out.reserve(static_cast<std::size_t>(n));
+  for (std::size_t k = 0; k < n; ++k)
+    out.emplace_back(text.data() + (offset[k] - offset.front()), text.data() + (offset[k + 1] - offset.front()));
+  return out;
+}
+
+/// Appends `strings` to a text column (see read_text).
+void append_text(Table& bytes, Table& ends, const std::vector<std::string>& strings) {
+  std::string packed;
+  std::vector<std::int64_t> offset;
+  for (const std::string& s : strings) {
+    packed += s;
+    offset.push_back(static_cast<std::int64_t>(bytes.rows + packed.size()));
+  }
+  bytes.append(packed.data(), packed.size());
+  ends.append(offset.data(), offset.size());
+}
+
+/// An attribute of fixed-length strings (text_type): a scalar (one value)
+/// or one-dimensional, as wide as its longest value.
+void write_text_attribute(H5::H5Object& object, const char* name, const std::vector<std::string>& values, bool scalar) {
+  std::size_t width = 1;
+  for (const std::string& v : values) width = std::max(width, v.size());
+  std::string packed(width * values.size(), '\0');
+  for (std::size_t k = 0; k < values.size(); ++k) values[k].copy(packed.data() + k * width, width);
+  const hsize_t dims[1] = {values.size()};
+  const H5::StrType type = text_type(width);
+  object.createAttribute(name, type, scalar ? H5::DataSpace(H5S_SCALAR) : H5::DataSpace(1, dims))
+      .write(type, packed.data());
+}
+
+/// The values of a string attribute written by write_text_attribute
+/// (trailing NULs dropped); refuses a variable-length one, which would be
+/// read from the global heap.
+std::vector<std::string> read_text_attribute(const H5::Attribute& attribute) {
+  if (attribute.getTypeClass() != H5T_STRING) throw H5::AttributeIException("read", attribute.getName() + " is not a string");
+  const H5::StrType type = attribute.getStrType();
+  if (type.isVariableStr())
+    throw H5::AttributeIException("read", attribute.getName() + " is a variable-length string");
+  const std::size_t width = type.getSize();
+  const auto n = static_cast<std::size_t>(attribute.getSpace().getSimpleExtentNpoints());
+  std::string packed(width * n, '\0');
+  if (n > 0) attribute.read(text_type(width), packed.data());
+  std::vector<std::string> out;
+  for (std::size_t k = 0; k < n; ++k) {
+    std::string value = packed.substr(k * width, width);
+    value.erase(value.find_last_not_of('\0') + 1);
+    out.push_back(std::move(value));
+  }
+  return out;
+}
+
+void write_string_attribute(H5::H5Object& object, const char* name, const std::string& value) {
+  write_text_attribute(object, name, {value}, true);
+}
+
+/// The value of a scalar string attribute.
+std::string read_one_text(const H5::Attribute& attribute) {
+  std::vector<std::string> values = read_text_attribute(attribute);
+  if (values.size() != 1) throw H5::AttributeIException("read", attribute.getName() + " is not one string");
+  return std::move(values.front());
+}
+
+/// A scalar string attribute; "" when there is none.
 std::string read_string_attribute(const H5::H5Object& object, const char* name) {
-  if (!object.attrExists(name)) return {};
-  const H5::Attribute attribute = object.openAttribute(name);
-  std::string value;
-  attribute.read(attribute.getStrType(), value);
-  return value;
+  return object.attrExists(name) ? read_one_text(object.openAttribute(name)) : std::string();
 }
 
 /// A named option as a typed scalar attribute of `group`: int64, float64 or a UTF-8 string.
@@ -242,12 +307,9 @@ std::vector<NamedOption> read_option_attributes(const H5::H5File& file, const ch
         option.value = value;
         break;
       }
-      case H5T_STRING: {
-        std::string value;
-        attribute.read(attribute.getStrType(), value);
-        option.value = value;
+      case H5T_STRING:
+        option.value = read_one_text(attribute);
         break;
-      }
       default:
         throw H5::AttributeIException("read_option_attributes", std::string(name) + "/" + option.name +
                                                                     " is not an integer, a number or a string");
@@ -257,44 +319,23 @@ std::vector<NamedOption> read_option_attributes(const H5::H5File& file, const ch
   return out;
 }
 
-/// A one-dimensional attribute of UTF-8 strings.
-void write_strings_attribute(H5::H5Object& object, const char* name, const std::vector<const char*>& values) {
-  const H5::StrType type = utf8_string_type();
-  const hsize_t dims[1] = {values.size()};
-  const char* none = nullptr;  // HDF5 wants a buffer even for no values
-  object.createAttribute(name, type, H5::DataSpace(1, dims)).write(type, values.empty() ? &none : values.data());
-}
-
-std::vector<std::string> read_strings_attribute(const H5::H5Object& object, const char* name) {
-  const H5::Attribute attribute = object.openAttribute(name);
-  const H5::DataSpace space = attribute.getSpace();
-  std::vector<char*> raw(static_cast<std::size_t>(space.getSimpleExtentNpoints()), nullptr);
-  if (raw.empty()) return {};
-  const H5::StrType type = utf8_string_type();
-  attribute.read(type, raw.data());
-  std::vector<std::string> out(raw.begin(), raw.end());
-  H5::DataSet::vlenReclaim(raw.data(), type, space);
-  return out;
-}
-
-/// The group `classes`, as attributes (datasets of variable-length strings
-/// cost about 20 ms each to create): `name`, `parent` (C,) and
+/// The group `classes`, as attributes: `name`, `parent` (C,) and
 /// `model_offset` (C + 1,): class c lists the models
 /// `model[model_offset[c]:model_offset[c + 1]]` of `model` (M,), in .cla
 /// order; `file` names the .cla file.
 void write_classes(H5::H5File& file, const std::vector<PsbClass>& classes, const std::string& source) {
   H5::Group group = file.createGroup("classes");
-  std::vector<const char*> names, parents, models;
+  std::vector<std::string> names, parents, models;
   std::vector<std::int64_t> offset = {0};
   for (const PsbClass& c : classes) {
-    names.push_back(c.name.c_str());
-    parents.push_back(c.parent.c_str());
-    for (const std::string& m : c.models) models.push_back(m.c_str());
+    names.push_back(c.name);
+    parents.push_back(c.parent);
+    models.insert(models.end(), c.models.begin(), c.models.end());
     offset.push_back(static_cast<std::int64_t>(models.size()));
   }
-  write_strings_attribute(group, "name", names);
-  write_strings_attribute(group, "parent", parents);
-  write_strings_attribute(group, "model", models);
+  write_text_attribute(group, "name", names, false);
+  write_text_attribute(group, "parent", parents, false);
+  write_text_attribute(group, "model", models, false);
   const hsize_t dims[1] = {offset.size()};
   group.createAttribute("model_offset", H5::PredType::NATIVE_INT64, H5::DataSpace(1, dims))
       .write(H5::PredType::NATIVE_INT64, offset.data());
@@ -304,9 +345,9 @@ void write_classes(H5::H5File& file, const std::vector<PsbClass>& classes, const
 void read_classes(const H5::H5File& file, Provenance& provenance) {
   if (!file.nameExists("classes")) return;
   const H5::Group group = file.openGroup("classes");
-  const std::vector<std::string> names = read_strings_attribute(group, "name"),
-                                 parents = read_strings_attribute(group, "parent"),
-                                 models = read_strings_attribute(group, "model");
+  const std::vector<std::string> names = read_text_attribute(group.openAttribute("name")),
+                                 parents = read_text_attribute(group.openAttribute("parent")),
+                                 models = read_text_attribute(group.openAttribute("model"));
   const H5::Attribute offsets = group.openAttribute("model_offset");
   std::vector<std::int64_t> offset(static_cast<std::size_t>(offsets.getSpace().getSimpleExtentNpoints()));
   offsets.read(H5::PredType::NATIVE_INT64, offset.data());
@@ -321,7 +362,7 @@ void read_classes(const H5::H5File& file, Provenance& provenance) {
 
 template <std::size_t N>
 void write_columns_attribute(H5::DataSet& dataset, const std::array<const char*, N>& names) {
-  write_strings_attribute(dataset, "columns", std::vector<const char*>(names.begin(), names.end()));
+  write_text_attribute(dataset, "columns", std::vector<std::string>(names.begin(), names.end()), false);
 }
 
 std::string utc_now() {
@@ -336,9 +377,11 @@ std::string utc_now() {
 /// Every dataset of the layout, by role.
 struct Tables {
   // per mesh (G rows)
-  Table name, class_label, error, content_hash, vertices, faces, status, timings, signature;
+  Table content_hash, vertices, faces, status, timings, signature;
   // G + 1 rows
-  Table node_offset, edge_offset, feature_offset;
+  Table name_offset, class_offset, error_offset, node_offset, edge_offset, feature_offset;
+  // the bytes of the text columns (see read_text)
+  Table name, class_label, error;
   // per node (N rows; skeleton_offset N + 1)
   Table nodes, node_geometry, node_attr, skeleton_offset;
   Table skeleton_points, edges, edge_attr, feature_points;
@@ -356,16 +399,19 @@ struct TableSpec {
 };
 
 std::vector<TableSpec> table_specs() {
+  const H5::PredType& u8 = H5::PredType::NATIVE_UINT8;
   const H5::PredType& i8 = H5::PredType::NATIVE_INT8;
   const H5::PredType& i32 = H5::PredType::NATIVE_INT32;
   const H5::PredType& i64 = H5::PredType::NATIVE_INT64;
   const H5::PredType& u64 = H5::PredType::NATIVE_UINT64;
   const H5::PredType& f64 = H5::PredType::NATIVE_DOUBLE;
-  const H5::StrType str = utf8_string_type();
   return {
-      {&Tables::name, "name", str, 0},
-      {&Tables::class_label, "class", str, 0},
-      {&Tables::error, "error", str, 0},
+      {&Tables::name, "name", u8, 0},
+      {&Tables::name_offset, "name_offset", i64, 0},
+      {&Tables::class_label, "class", u8, 0},
+      {&Tables::class_offset, "class_offset", i64, 0},
+      {&Tables::error, "error", u8, 0},
+      {&Tables::error_offset, "error_offset", i64, 0},
       {&Tables::content_hash, "content_hash", u64, 0},
       {&Tables::vertices, "vertices", i64, 0},
       {&Tables::faces, "faces", i64, 0},
@@ -431,13 +477,6 @@ struct Batch {
 template <typename T>
 void append_to(std::vector<T>& out, const std::vector<T>& rows) {
   out.insert(out.end(), rows.begin(), rows.end());
-}
-
-void append_strings(Table& table, const std::vector<std::string>& strings) {
-  std::vector<const char*> raw;
-  raw.reserve(strings.size());
-  for (const std::string& s : strings) raw.push_back(s.c_str());
-  table.append(raw.data(), raw.size());
 }
 
 template <typename T>
@@ -521,14 +560,19 @@ int layout_version(const H5::H5File& file) {
 Snapshot read_snapshot(const H5::H5File& file, const Tables& t) {
   Snapshot s;
   t.count.read(&s.size, H5::PredType::NATIVE_INT64);
+  if (s.size < 0 || static_cast<hsize_t>(s.size) >= t.name_offset.rows)
+    throw H5::DataSetIException("read", "count (" + std::to_string(s.size) + ") exceeds the rows written");
   const auto g = static_cast<hsize_t>(s.size);
-  s.names = t.name.read_strings(0, g);
-  s.class_labels = t.class_label.read_strings(0, g);
+  s.names = read_text(t.name, t.name_offset, "name_offset", 0, g);
+  s.class_labels = read_text(t.class_label, t.class_offset, "class_offset", 0, g);
   s.hashes = t.content_hash.read_vector<std::uint64_t>(0, g);
   s.signatures = t.signature.read_vector<double>(0, g);
   s.node_offset = t.node_offset.read_vector<std::int64_t>(0, g + 1);
   s.edge_offset = t.edge_offset.read_vector<std::int64_t>(0, g + 1);
   s.feature_offset = t.feature_offset.read_vector<std::int64_t>(0, g + 1);
+  check_offsets(s.node_offset, t.nodes.rows, "node_offset");
+  check_offsets(s.edge_offset, t.edges.rows, "edge_offset");
+  check_offsets(s.feature_offset, t.feature_points.rows, "feature_offset");
   s.provenance.reebkit_version = read_string_attribute(file, "reebkit_version");
   s.provenance.options = read_string_attribute(file, "options");
   s.provenance.command = read_string_attribute(file, "command");
@@ -567,9 +611,9 @@ std::vector<GraphRecord> read_entries(const Tables& t, const Snapshot& s, std::i
   const auto node0 = s.node_offset[first], node1 = s.node_offset[first + n];
   const auto edge0 = s.edge_offset[first], edge1 = s.edge_offset[first + n];
   const auto feat0 = s.feature_offset[first], feat1 = s.feature_offset[first + n];
-  const auto names = t.name.read_strings(f, count);
-  const auto labels = t.class_label.read_strings(f, count);
-  const auto errors = t.error.read_strings(f, count);
+  const auto names = read_text(t.name, t.name_offset, "name_offset", f, count);
+  const auto labels = read_text(t.class_label, t.class_offset, "class_offset", f, count);
+  const auto errors = read_text(t.error, t.error_offset, "error_offset", f, count);
   const auto hashes = t.content_hash.read_vector<std::uint64_t>(f, count);
   const auto vertices = t.vertices.read_vector<std::int64_t>(f, count);
   const auto faces = t.faces.read_vector<std::int64_t>(f, count);
@@ -579,6 +623,7 @@ std::vector<GraphRecord> read_entries(const Tables& t, const Snapshot& s, std::i
   const auto geometry = t.node_geometry.read_vector<double>(node0, node1 - node0);
   const auto node_attr = t.node_attr.read_vector<double>(node0, node1 - node0);
   const auto skeleton_offset = t.skeleton_offset.read_vector<std::int64_t>(node0, node1 - node0 + 1);
+  check_offsets(skeleton_offset, t.skeleton_points.rows, "skeleton_offset");
   const auto point0 = skeleton_offset.front();
   const auto points = t.skeleton_points.read_vector<double>(point0, skeleton_offset.back() - point0);
   const auto edges = t.edges.read_vector<std::int32_t>(edge0, edge1 - edge0);
@@ -793,7 +838,8 @@ void CollectionWriter::Impl::create(const fs::path& target, const Provenance& pr
   }
   set_columns(tables);
   const std::int64_t zero = 0;
-  for (Table* offsets : {&tables.node_offset, &tables.edge_offset, &tables.feature_offset, &tables.skeleton_offset})
+  for (Table* offsets : {&tables.name_offset, &tables.class_offset, &tables.error_offset, &tables.node_offset,
+                         &tables.edge_offset, &tables.feature_offset, &tables.skeleton_offset})
     offsets->append(&zero, 1);
   const hsize_t one[1] = {1};
   tables.count = file.createDataSet("count", H5::PredType::NATIVE_INT64, H5::DataSpace(1, one));
@@ -804,9 +850,9 @@ void CollectionWriter::Impl::create(const fs::path& target, const Provenance& pr
 void CollectionWriter::Impl::write_batch() {
   if (buffered == 0) return;
   Batch& b = batch;
-  append_strings(tables.name, b.name);
-  append_strings(tables.class_label, b.class_label);
-  append_strings(tables.error, b.error);
+  append_text(tables.name, tables.name_offset, b.name);
+  append_text(tables.class_label, tables.class_offset, b.class_label);
+  append_text(tables.error, tables.error_offset, b.error);
   append_rows(tables.content_hash, b.content_hash);
   append_rows(tables.vertices, b.vertices);
   append_rows(tables.faces, b.faces);

@@ -19,8 +19,11 @@
 namespace reebkit {
 
 /// Version of the dataset layout, stored as the file attribute `layout`.
-/// 3: the groups `analysis_options` and `classes`.
-inline constexpr int kCollectionLayoutVersion = 3;
+/// 3: the groups `analysis_options` and `classes`. 4: no variable-length
+/// strings (names, classes and errors as UTF-8 bytes + offsets, string
+/// attributes fixed-length): HDF5 reads variable-length strings from its
+/// global heap trusting the stored lengths.
+inline constexpr int kCollectionLayoutVersion = 4;
 
 /// Where the file came from: file attributes, and two groups.
 struct Provenance {
