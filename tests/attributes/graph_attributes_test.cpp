@@ -14,6 +14,7 @@
 #include <iostream>
 #include <cmath>
 #include <numeric>
+#include <random>
 #include <set>
 #include <string>
 
@@ -279,26 +280,57 @@ double max_relative_difference(const std::vector<double>& a, const std::vector<d
 // The pipeline gives the identical graph on a moved, turned and rescaled copy
 // (analyze_mesh_test), so every attribute must come out the same up to
 // rounding.
-// The radius profile is what mean_radius averages; each shape histogram is a
-// distribution (sums to 1) for a region with area.
+// The radius profile is what mean_radius averages; each shape histogram,
+// Euclidean or geodesic, is a distribution (sums to 1) for a region with
+// area, and so are the whole surface's.
 TEST(GraphAttributes, ProfilesAverageToTheMeanRadiusAndHistogramsSumToOne) {
   for (const Case& c : cases()) {
     SCOPED_TRACE(c.name);
     const GraphAttributes g = compute_attributes(c.analysis);
     for (Index n = 0; n < c.analysis.reeb.num_nodes(); ++n) {
-      double profile = 0.0, shape = 0.0;
+      double profile = 0.0;
       for (int k = 0; k < kRadiusProfileLevels; ++k) profile += node_value(g, n, NodeAttribute(kNodeRadiusProfile + k));
-      for (int k = 0; k < kShapeBins; ++k) {
-        EXPECT_GE(node_value(g, n, NodeAttribute(kNodeShapeHistogram + k)), 0.0);
-        shape += node_value(g, n, NodeAttribute(kNodeShapeHistogram + k));
-      }
       EXPECT_NEAR(profile / kRadiusProfileLevels, node_value(g, n, kNodeMeanRadius), 1e-12) << "node " << n;
-      EXPECT_NEAR(shape, node_value(g, n, kNodeRelativeArea) > 0.0 ? 1.0 : 0.0, 1e-12) << "node " << n;
+      for (const NodeAttribute first : {kNodeShapeHistogram, kNodeGeodesicHistogram}) {
+        double sum = 0.0;
+        for (int k = 0; k < kShapeBins; ++k) {
+          EXPECT_GE(node_value(g, n, NodeAttribute(first + k)), 0.0);
+          sum += node_value(g, n, NodeAttribute(first + k));
+        }
+        EXPECT_NEAR(sum, node_value(g, n, kNodeRelativeArea) > 0.0 ? 1.0 : 0.0, 1e-12)
+            << "node " << n << ", " << kNodeAttributeNames[first];
+      }
     }
-    double global = 0.0;
-    for (int k = kSigGlobalShape; k < kSignatureLength; ++k) global += g.signature[static_cast<std::size_t>(k)];
-    EXPECT_NEAR(global, 1.0, 1e-12);
+    for (const int first : {kSigGlobalShape, kSigGlobalGeodesic}) {
+      double global = 0.0;
+      for (int k = first; k < first + kGlobalShapeBins; ++k) global += g.signature[static_cast<std::size_t>(k)];
+      EXPECT_NEAR(global, 1.0, 1e-12) << kSignatureNames[static_cast<std::size_t>(first)];
+    }
   }
+}
+
+// A capsule's diameter ends are its poles, and every meridian is a geodesic
+// from pole to pole: the axis offset d1 + d2 - D is 0 on the whole surface
+// (up to the zig-zag of mesh-edge paths), and the axis position |d1 - d2| / D
+// is spread evenly over [0, 1] along the tube (mean 1/2 by symmetry).
+TEST(GraphAttributes, CapsuleMainAxisRunsFromPoleToPole) {
+  const GraphAttributes g = compute_attributes(cases()[3].analysis);
+  double position_mean = 0.0, offset_mean = 0.0, position_sum = 0.0, offset_sum = 0.0;
+  for (int k = 0; k < kGlobalShapeBins / 2; ++k) {
+    const double position = g.signature[static_cast<std::size_t>(kSigGlobalGeodesic + k)];
+    const double offset = g.signature[static_cast<std::size_t>(kSigGlobalGeodesic + kGlobalShapeBins / 2 + k)];
+    position_sum += position, offset_sum += offset;
+    position_mean += position * (k + 0.5) / (kGlobalShapeBins / 2);  // bins of 1/8
+    offset_mean += offset * (k + 0.5) / kGlobalShapeBins;            // bins of 1/16
+  }
+  EXPECT_NEAR(position_sum, 0.5, 1e-12);
+  EXPECT_NEAR(offset_sum, 0.5, 1e-12);
+  std::cout << "capsule: mean axis position " << position_mean / 0.5 << ", mean axis offset " << offset_mean / 0.5 << "\n";
+  EXPECT_NEAR(position_mean / 0.5, 0.5, 0.02);
+  // Offsets within the first bin (below 1/16 of the diameter), whose centre
+  // the histogram's mean counts them at.
+  EXPECT_LE(offset_mean / 0.5, 1.0 / 32.0 + 1e-9);
+  EXPECT_GE(g.signature[static_cast<std::size_t>(kSigGlobalGeodesic + kGlobalShapeBins / 2)], 0.45);
 }
 
 // The mean distance between two random points of a sphere of radius R is
@@ -405,6 +437,91 @@ TEST(GraphAttributes, DeformedPoseChangesAttributesLittle) {
             << ", of a geometric signature entry " << worst_signature << "\n";
   EXPECT_LE(worst_leaf, 0.05);  // measured 0.032 (extent of the turned arm)
   EXPECT_LE(worst_signature, 0.01);  // measured 0.005
+}
+
+/// Half the L1 distance of the `bins` values from a and from b.
+double half_l1(const double* a, const double* b, int bins) {
+  double l1 = 0.0;
+  for (int k = 0; k < bins; ++k) l1 += std::abs(a[k] - b[k]);
+  return l1 / 2;
+}
+
+// Bending an arm of the star by 90 degrees along its whole length (as `reeb
+// deform --falloff 1` does) keeps the graph and the lengths of paths on the
+// surface: the geodesic histograms of the regions and of the surface move
+// by sampling only, while the Euclidean D2 of the
+// bent arm and of the surface change several times more (so a descriptor
+// that followed the pose would fail this test).
+TEST(GraphAttributes, GeodesicAttributesIgnoreAPoseChangeThatMovesTheEuclideanOnes) {
+  const MeshAnalysis& a = cases()[0].analysis;
+  DeformOptions turn;
+  turn.node = leaf_of_feature(a, 0);
+  turn.angle_degrees = 90.0;
+  turn.falloff = 1.0;
+  const MeshAnalysis posed = analyze_mesh(deform_component(a, turn));
+  ASSERT_EQ(posed.reeb.num_nodes(), a.reeb.num_nodes());
+  ASSERT_EQ(posed.reeb.edges, a.reeb.edges);
+  const GraphAttributes before = compute_attributes(a), after = compute_attributes(posed);
+  const std::vector<Index> match = match_nodes(a.reeb, posed.reeb);
+  const auto row = [](const GraphAttributes& g, Index n, NodeAttribute first) {
+    return g.node.data() + static_cast<std::size_t>(n) * kNodeAttributeCount + first;
+  };
+  double geodesic = 0.0;
+  for (Index n = 0; n < a.reeb.num_nodes(); ++n) {
+    const Index m = match[static_cast<std::size_t>(n)];
+    geodesic = std::max(geodesic, half_l1(row(before, n, kNodeGeodesicHistogram), row(after, m, kNodeGeodesicHistogram), kShapeBins));
+  }
+  const Index arm = turn.node, posed_arm = match[static_cast<std::size_t>(arm)];
+  const double arm_d2 = half_l1(row(before, arm, kNodeShapeHistogram), row(after, posed_arm, kNodeShapeHistogram), kShapeBins);
+  const double global_geodesic = half_l1(before.signature.data() + kSigGlobalGeodesic,
+                                         after.signature.data() + kSigGlobalGeodesic, kGlobalShapeBins);
+  const double global_d2 = half_l1(before.signature.data() + kSigGlobalShape, after.signature.data() + kSigGlobalShape,
+                                   kGlobalShapeBins);
+  std::cout << "arm bent by 90 degrees: geodesic histograms move by at most " << geodesic << " (half L1), the global geodesic histogram by " << global_geodesic << "; the bent arm's Euclidean D2 by "
+            << arm_d2 << ", the global D2 by " << global_d2 << "\n";
+  EXPECT_LE(geodesic, 0.05);
+  EXPECT_LE(global_geodesic, 0.02);
+  EXPECT_GE(arm_d2, 3 * std::max(geodesic, 0.01));
+  EXPECT_GE(global_d2, 3 * std::max(global_geodesic, 0.01));
+}
+
+/// `mesh` with its vertices renumbered: vertex v becomes to[v].
+Mesh renumbered(const Mesh& mesh, const std::vector<Index>& to) {
+  Mesh out = mesh;
+  for (Index v = 0; v < mesh.num_vertices(); ++v) out.vertices.row(to[static_cast<std::size_t>(v)]) = mesh.vertices.row(v);
+  for (Index t = 0; t < mesh.num_triangles(); ++t)
+    for (int k = 0; k < 3; ++k) out.triangles(t, k) = to[static_cast<std::size_t>(mesh.triangles(t, k))];
+  return out;
+}
+
+// The same surface, graph and f_q with the vertices numbered otherwise (f_q,
+// the segmentation and the diameter ends carried along): every attribute of
+// every region, and the signature, is the same up to rounding.
+TEST(GraphAttributes, InvariantToVertexRenumbering) {
+  for (const std::size_t k : {std::size_t{0}, std::size_t{5}}) {  // star, elk
+    const MeshAnalysis& a = cases()[k].analysis;
+    SCOPED_TRACE(cases()[k].name);
+    std::vector<Index> to(static_cast<std::size_t>(a.mesh.num_vertices()));
+    std::iota(to.begin(), to.end(), Index{0});
+    std::shuffle(to.begin(), to.end(), std::mt19937(7));
+    const Mesh mesh = renumbered(a.mesh, to);
+    std::vector<double> fq(a.fq.value.size());
+    ReebGraph reeb = a.reeb;
+    for (std::size_t v = 0; v < to.size(); ++v) {
+      fq[static_cast<std::size_t>(to[v])] = a.fq.value[v];
+      reeb.vertex_node[static_cast<std::size_t>(to[v])] = a.reeb.vertex_node[v];
+    }
+    FeaturePoints features = a.features;
+    features.source1 = to[static_cast<std::size_t>(a.features.source1)];
+    features.source2 = to[static_cast<std::size_t>(a.features.source2)];
+    const GraphAttributes reference = compute_attributes(a);
+    const GraphAttributes g = compute_attributes(mesh, build_mesh_graph(mesh), fq, features, reeb);
+    EXPECT_LE(max_relative_difference(g.node, reference.node), 1e-9);
+    EXPECT_LE(max_relative_difference(g.edge, reference.edge), 1e-9);
+    // The D2 histograms sample random points by triangle order, which the
+    // renumbering keeps; all the other entries are sums over the surface.
+    EXPECT_LE(max_relative_difference(g.signature, reference.signature), 1e-9);
+  }
 }
 
 // One arm, many arms, a torus with its cycle: always kSignatureLength

@@ -19,8 +19,9 @@
 namespace reebkit {
 
 /// Version of the dataset layout, stored as the file attribute `layout`.
-/// 3: the groups `analysis_options` and `classes`.
-inline constexpr int kCollectionLayoutVersion = 3;
+/// 3: the groups `analysis_options` and `classes`. 4: the pose-invariant
+/// attributes (node_attr 34 columns, signature 64).
+inline constexpr int kCollectionLayoutVersion = 4;
 
 /// Where the file came from: file attributes, and two groups.
 struct Provenance {
