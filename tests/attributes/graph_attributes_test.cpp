@@ -37,45 +37,6 @@ double signature_value(const GraphAttributes& g, const std::string& name) {
   return g.signature[static_cast<std::size_t>(it - kSignatureNames.begin())];
 }
 
-/// A capsule along z: a cylinder of radius r from z = -half_length to
-/// +half_length closed by two hemispheres, `sides` vertices per ring, rings
-/// about `sides`/2pi per unit of length on the cylinder and `cap_rings` per
-/// hemisphere (its equator included), a pole at each end.
-Mesh make_capsule(double r, double half_length, int sides, int cap_rings) {
-  std::vector<std::pair<double, double>> rings;  // (radius, z), south to north
-  for (int j = 1; j <= cap_rings; ++j) {
-    const double theta = 0.5 * kPi * j / cap_rings;
-    rings.emplace_back(r * std::sin(theta), -half_length - r * std::cos(theta));
-  }
-  const int cylinder = static_cast<int>(std::lround(2.0 * half_length * sides / (2.0 * kPi * r)));
-  for (int j = 1; j < cylinder; ++j) rings.emplace_back(r, -half_length + 2.0 * half_length * j / cylinder);
-  for (int j = cap_rings; j >= 1; --j) {
-    const double theta = 0.5 * kPi * j / cap_rings;
-    rings.emplace_back(r * std::sin(theta), half_length + r * std::cos(theta));
-  }
-  const Index ring_count = static_cast<Index>(rings.size());
-  Mesh m;
-  m.vertices.resize(ring_count * sides + 2, 3);
-  for (Index i = 0; i < ring_count; ++i)
-    for (int j = 0; j < sides; ++j) {
-      const double phi = 2.0 * kPi * j / sides;
-      m.vertices.row(i * sides + j) << rings[i].first * std::cos(phi), rings[i].first * std::sin(phi), rings[i].second;
-    }
-  const Index south = ring_count * sides, north = south + 1;
-  m.vertices.row(south) << 0, 0, -half_length - r;
-  m.vertices.row(north) << 0, 0, half_length + r;
-  std::vector<Index> t;
-  const auto at = [&](Index ring, int j) { return ring * sides + (j % sides); };
-  for (int j = 0; j < sides; ++j) {
-    t.insert(t.end(), {south, at(0, j + 1), at(0, j)});
-    for (Index i = 0; i + 1 < ring_count; ++i)
-      t.insert(t.end(), {at(i, j), at(i, j + 1), at(i + 1, j + 1), at(i, j), at(i + 1, j + 1), at(i + 1, j)});
-    t.insert(t.end(), {north, at(ring_count - 1, j), at(ring_count - 1, j + 1)});
-  }
-  m.triangles = Eigen::Map<Triangles>(t.data(), static_cast<Index>(t.size() / 3), 3);
-  return m;
-}
-
 /// `mesh` without its last vertex and the triangles around it: a small hole.
 Mesh punched(const Mesh& mesh) {
   const Index last = mesh.num_vertices() - 1;
@@ -104,7 +65,7 @@ const std::vector<Case>& cases() {
     c.push_back({"star", analyze_mesh(make_star(star))});
     c.push_back({"punched star", analyze_mesh(punched(make_star(star)))});
     c.push_back({"torus", analyze_mesh(make_torus(60, 20, 1.0, 0.3))});
-    c.push_back({"capsule", analyze_mesh(make_capsule(1.0, 30.0, 48, 12))});
+    c.push_back({"capsule", analyze_mesh(test::make_capsule(1.0, 30.0, 48, 12))});
     c.push_back({"bunny", analyze_mesh(load_mesh(test::embedded_dataset_dir() / "bunny.off").components.front())});
     c.push_back({"elk", analyze_mesh(load_mesh(test::embedded_dataset_dir() / "elk.off").components.front())});
     return c;
@@ -297,7 +258,8 @@ TEST(GraphAttributes, ProfilesAverageToTheMeanRadiusAndHistogramsSumToOne) {
           EXPECT_GE(node_value(g, n, NodeAttribute(first + k)), 0.0);
           sum += node_value(g, n, NodeAttribute(first + k));
         }
-        EXPECT_NEAR(sum, node_value(g, n, kNodeRelativeArea) > 0.0 ? 1.0 : 0.0, 1e-12)
+        // Up to the rounding of the area sums, which add in another order.
+        EXPECT_NEAR(sum, node_value(g, n, kNodeRelativeArea) > 0.0 ? 1.0 : 0.0, 1e-9)
             << "node " << n << ", " << kNodeAttributeNames[first];
       }
     }
@@ -446,43 +408,65 @@ double half_l1(const double* a, const double* b, int bins) {
   return l1 / 2;
 }
 
-// Bending an arm of the star by 90 degrees along its whole length (as `reeb
-// deform --falloff 1` does) keeps the graph and the lengths of paths on the
-// surface: the geodesic histograms of the regions and of the surface move
-// by sampling only, while the Euclidean D2 of the
-// bent arm and of the surface change several times more (so a descriptor
-// that followed the pose would fail this test).
+// Turning a part by 60 degrees about where it attaches (deform_component,
+// as `reeb deform` does: rigid beyond a ramp over the first quarter of the
+// part, which bends) keeps the lengths of paths on the surface up to the
+// ramp's small stretch. An arm of the star, and one half of the capsule
+// (whose diameter ends, the poles, are clear-cut; the star's five equal arms
+// make any two tips a near-tie for the diameter): the geodesic histogram
+// of the turned part moves by sampling only, while its Euclidean D2, whose
+// chords cross the bend, moves several times more (so a descriptor that
+// followed the pose would fail); the same for the whole surface's
+// histograms on the capsule.
 TEST(GraphAttributes, GeodesicAttributesIgnoreAPoseChangeThatMovesTheEuclideanOnes) {
-  const MeshAnalysis& a = cases()[0].analysis;
-  DeformOptions turn;
-  turn.node = leaf_of_feature(a, 0);
-  turn.angle_degrees = 90.0;
-  turn.falloff = 1.0;
-  const MeshAnalysis posed = analyze_mesh(deform_component(a, turn));
-  ASSERT_EQ(posed.reeb.num_nodes(), a.reeb.num_nodes());
-  ASSERT_EQ(posed.reeb.edges, a.reeb.edges);
-  const GraphAttributes before = compute_attributes(a), after = compute_attributes(posed);
-  const std::vector<Index> match = match_nodes(a.reeb, posed.reeb);
   const auto row = [](const GraphAttributes& g, Index n, NodeAttribute first) {
     return g.node.data() + static_cast<std::size_t>(n) * kNodeAttributeCount + first;
   };
-  double geodesic = 0.0;
-  for (Index n = 0; n < a.reeb.num_nodes(); ++n) {
-    const Index m = match[static_cast<std::size_t>(n)];
-    geodesic = std::max(geodesic, half_l1(row(before, n, kNodeGeodesicHistogram), row(after, m, kNodeGeodesicHistogram), kShapeBins));
+  for (const std::size_t c : {std::size_t{0}, std::size_t{3}}) {  // star, capsule
+    const MeshAnalysis& a = cases()[c].analysis;
+    SCOPED_TRACE(cases()[c].name);
+    DeformOptions turn;
+    turn.node = leaf_of_feature(a, 0);
+    turn.angle_degrees = 60.0;
+    const MeshAnalysis posed = analyze_mesh(deform_component(a, turn));
+    ASSERT_EQ(posed.reeb.num_nodes(), a.reeb.num_nodes());
+    const GraphAttributes before = compute_attributes(a), after = compute_attributes(posed);
+    // Each leaf, matched by the vertex at its tip (the small regions where
+    // the star's arms join its core may come in another order).
+    double geodesic = 0.0, turned_geodesic = -1.0, turned_d2 = -1.0;
+    for (std::size_t k = 0; k < a.features.vertices.size(); ++k) {
+      const Index n = leaf_of_feature(a, k);
+      const Index m = posed.reeb.vertex_node[static_cast<std::size_t>(a.features.vertices[k])];
+      ASSERT_EQ(a.reeb.nodes[static_cast<std::size_t>(n)].end, NodeType::Termination);
+      ASSERT_EQ(posed.reeb.nodes[static_cast<std::size_t>(m)].end, NodeType::Termination);
+      const double moved = half_l1(row(before, n, kNodeGeodesicHistogram), row(after, m, kNodeGeodesicHistogram), kShapeBins);
+      geodesic = std::max(geodesic, moved);
+      if (n != turn.node) continue;
+      turned_geodesic = moved;
+      turned_d2 = half_l1(row(before, n, kNodeShapeHistogram), row(after, m, kNodeShapeHistogram), kShapeBins);
+    }
+    ASSERT_GE(turned_d2, 0.0) << "the turned leaf was not found";
+    const double global_geodesic = half_l1(before.signature.data() + kSigGlobalGeodesic,
+                                           after.signature.data() + kSigGlobalGeodesic, kGlobalShapeBins);
+    const double global_d2 = half_l1(before.signature.data() + kSigGlobalShape,
+                                     after.signature.data() + kSigGlobalShape, kGlobalShapeBins);
+    std::cout << cases()[c].name << ", a leaf turned by 60 degrees: its geodesic histogram moves by " << turned_geodesic
+              << " (half L1), its Euclidean D2 by " << turned_d2 << "; every leaf's geodesic histogram by at most "
+              << geodesic << "; the whole surface's geodesic histogram by " << global_geodesic << ", its D2 by "
+              << global_d2 << "\n";
+    // Measured: the turned part's geodesic histogram 0.0015 (star) and
+    // 0.0023 (capsule), its D2 0.10 and 0.018; the other arms of the star
+    // up to 0.045, as their borders with the core move a little.
+    EXPECT_LE(turned_geodesic, 0.01);
+    EXPECT_GE(turned_d2, 5 * std::max(turned_geodesic, 0.002));
+    EXPECT_LE(geodesic, 0.06);
+    if (c == 3) {  // measured 0.0025 and 0.083
+      EXPECT_LE(global_geodesic, 0.01);
+      EXPECT_GE(global_d2, 5 * global_geodesic);
+    } else {  // measured 0.042: the diameter ends moved to another pair of tips
+      EXPECT_LE(global_geodesic, 0.06);
+    }
   }
-  const Index arm = turn.node, posed_arm = match[static_cast<std::size_t>(arm)];
-  const double arm_d2 = half_l1(row(before, arm, kNodeShapeHistogram), row(after, posed_arm, kNodeShapeHistogram), kShapeBins);
-  const double global_geodesic = half_l1(before.signature.data() + kSigGlobalGeodesic,
-                                         after.signature.data() + kSigGlobalGeodesic, kGlobalShapeBins);
-  const double global_d2 = half_l1(before.signature.data() + kSigGlobalShape, after.signature.data() + kSigGlobalShape,
-                                   kGlobalShapeBins);
-  std::cout << "arm bent by 90 degrees: geodesic histograms move by at most " << geodesic << " (half L1), the global geodesic histogram by " << global_geodesic << "; the bent arm's Euclidean D2 by "
-            << arm_d2 << ", the global D2 by " << global_d2 << "\n";
-  EXPECT_LE(geodesic, 0.05);
-  EXPECT_LE(global_geodesic, 0.02);
-  EXPECT_GE(arm_d2, 3 * std::max(geodesic, 0.01));
-  EXPECT_GE(global_d2, 3 * std::max(global_geodesic, 0.01));
 }
 
 /// `mesh` with its vertices renumbered: vertex v becomes to[v].
@@ -511,6 +495,7 @@ TEST(GraphAttributes, InvariantToVertexRenumbering) {
       fq[static_cast<std::size_t>(to[v])] = a.fq.value[v];
       reeb.vertex_node[static_cast<std::size_t>(to[v])] = a.reeb.vertex_node[v];
     }
+    for (ReebNode& node : reeb.nodes) node.birth_vertex = to[static_cast<std::size_t>(node.birth_vertex)];
     FeaturePoints features = a.features;
     features.source1 = to[static_cast<std::size_t>(a.features.source1)];
     features.source2 = to[static_cast<std::size_t>(a.features.source2)];
