@@ -6,8 +6,11 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <utility>
+#include <vector>
 
 namespace reebkit::test {
 
@@ -77,6 +80,41 @@ std::pair<int, std::string> run_with_file_size_limit(std::uint64_t bytes, const 
   int status = 0;
   ::waitpid(child, &status, 0);
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+Mesh make_capsule(double r, double half_length, int sides, int cap_rings) {
+  std::vector<std::pair<double, double>> rings;  // (radius, z), south to north
+  for (int j = 1; j <= cap_rings; ++j) {
+    const double theta = 0.5 * static_cast<double>(EIGEN_PI) * j / cap_rings;
+    rings.emplace_back(r * std::sin(theta), -half_length - r * std::cos(theta));
+  }
+  const int cylinder = static_cast<int>(std::lround(2.0 * half_length * sides / (2.0 * static_cast<double>(EIGEN_PI) * r)));
+  for (int j = 1; j < cylinder; ++j) rings.emplace_back(r, -half_length + 2.0 * half_length * j / cylinder);
+  for (int j = cap_rings; j >= 1; --j) {
+    const double theta = 0.5 * static_cast<double>(EIGEN_PI) * j / cap_rings;
+    rings.emplace_back(r * std::sin(theta), half_length + r * std::cos(theta));
+  }
+  const Index ring_count = static_cast<Index>(rings.size());
+  Mesh m;
+  m.vertices.resize(ring_count * sides + 2, 3);
+  for (Index i = 0; i < ring_count; ++i)
+    for (int j = 0; j < sides; ++j) {
+      const double phi = 2.0 * static_cast<double>(EIGEN_PI) * j / sides;
+      m.vertices.row(i * sides + j) << rings[i].first * std::cos(phi), rings[i].first * std::sin(phi), rings[i].second;
+    }
+  const Index south = ring_count * sides, north = south + 1;
+  m.vertices.row(south) << 0, 0, -half_length - r;
+  m.vertices.row(north) << 0, 0, half_length + r;
+  std::vector<Index> t;
+  const auto at = [&](Index ring, int j) { return ring * sides + (j % sides); };
+  for (int j = 0; j < sides; ++j) {
+    t.insert(t.end(), {south, at(0, j + 1), at(0, j)});
+    for (Index i = 0; i + 1 < ring_count; ++i)
+      t.insert(t.end(), {at(i, j), at(i, j + 1), at(i + 1, j + 1), at(i, j), at(i + 1, j + 1), at(i + 1, j)});
+    t.insert(t.end(), {north, at(ring_count - 1, j), at(ring_count - 1, j + 1)});
+  }
+  m.triangles = Eigen::Map<Triangles>(t.data(), static_cast<Index>(t.size() / 3), 3);
+  return m;
 }
 
 }  // namespace reebkit::test

@@ -2,6 +2,8 @@
 // with a clear message when the shared datasets are absent.
 #pragma once
 
+#include "reebkit/core/mesh.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -58,6 +60,12 @@ std::string with_file_size_limit(const std::string& command, std::uint64_t bytes
 /// The child leaves with exit(0) after `body` (HDF5 and the C++ runtime
 /// clean up as in a real program), exit(3) when `body` throws.
 std::pair<int, std::string> run_with_file_size_limit(std::uint64_t bytes, const std::function<void(int fd)>& body);
+
+/// A capsule along z: a cylinder of radius r from z = -half_length to
+/// +half_length closed by two hemispheres, `sides` vertices per ring, rings
+/// about `sides`/2pi per unit of length on the cylinder and `cap_rings` per
+/// hemisphere (its equator included), a pole at each end.
+Mesh make_capsule(double r, double half_length, int sides, int cap_rings);
 
 }  // namespace reebkit::test
 

@@ -96,9 +96,13 @@ po::options_description matching_options(MatchingOptions& matching) {
        "weight of s: local structure (degree, start and end types, neighbour area)")
       ("edge-weight", defaulted(&matching.edge_weight), "weight of e: edge inconsistency of the correspondence")
       ("profile-weight", defaulted(&matching.profile_weight), "weight of p: radius profiles of the regions")
-      ("shape-weight", defaulted(&matching.shape_weight), "weight of h: shape histograms of the regions")
+      ("shape-weight", defaulted(&matching.shape_weight), "weight of h: Euclidean shape histograms of the regions")
+      ("geodesic-shape-weight", defaulted(&matching.geodesic_shape_weight),
+       "weight of h_g: geodesic histograms of the regions")
       ("global-shape-weight", defaulted(&matching.global_shape_weight),
        "weight of g: D2 shape distributions of the whole surfaces")
+      ("global-geodesic-weight", defaulted(&matching.global_geodesic_weight),
+       "weight of g_g: geodesic histograms of the whole surfaces")
       ("unmatched-cost", defaulted(&matching.unmatched_cost),
        "cost of deleting or inserting a node, per unit of node weight")
       ("min-node-weight", defaulted(&matching.min_node_weight),

@@ -29,7 +29,26 @@
 //   from kShapeSamples random points drawn by area (a triangle on a border
 //   split between regions like its area), distances / sqrt(region area);
 //   the signature's global D2 is the same on the whole surface. A fixed
-//   seed per region keeps the result a function of the mesh.
+//   seed per region keeps the result a function of the mesh. Both follow
+//   the pose: a limb that turns changes the distances between its points
+//   and the rest.
+// - Geodesic histogram of a region, its intrinsic counterpart: the area of
+//   the region (one third of each triangle per vertex, as ReebNode::area)
+//   by geodesic distance from its highest vertex, from the searches that
+//   measure the geodesic extent (no other geodesic pass), / sqrt(region
+//   area). Geodesic distances, hence the histogram, do not change when the
+//   surface bends without stretching (the isometries under which the paper
+//   builds f_q, section 4.1).
+// - The main axis: the geodesic distance fields d1, d2 from the diameter
+//   ends v_s1, v_s2 of the feature point search (section 4.1.2, eqs. 2-4),
+//   D = d1(v_s2). A vertex's axis position |d1 - d2| / D and axis offset
+//   (d1 + d2 - D) / D locate it on the surface whatever the pose: along the
+//   longest geodesic and away from it (for a path graph, the two coordinates
+//   of the bipolar parameterization). Both are symmetric in the two ends,
+//   whose order is arbitrary. The signature's global geodesic histogram is
+//   their distribution over the surface, by area. Two geodesic passes (the
+//   feature point search computes the same two fields and does not keep
+//   them).
 // - Boundary length of an edge (a, b): the curve joining the midpoints of the
 //   mesh edges from a vertex of a to a vertex of b (through the centroid in a
 //   triangle with three regions), the discrete border between the two
@@ -57,6 +76,10 @@ namespace {
 constexpr int kLevels = kRadiusProfileLevels;  // level lines per region for kNodeMeanRadius
 constexpr int kShapeSamples = 128;   // random points per region for kNodeShapeHistogram
 constexpr double kShapeBinWidth = 0.2;  // of distance / sqrt(region area)
+constexpr double kGeodesicBinWidth = 0.25;  // of geodesic distance / sqrt(region area), kNodeGeodesicHistogram
+constexpr int kAxisBins = kGlobalShapeBins / 2;       // of each half of the global geodesic histogram
+constexpr double kAxisPositionBinWidth = 1.0 / kAxisBins;  // of |d1 - d2| / D
+constexpr double kAxisOffsetBinWidth = 0.5 / kAxisBins;    // of (d1 + d2 - D) / D
 constexpr int kGlobalShapeSamples = 512;       // random points of the whole surface for its D2
 constexpr double kGlobalShapeBinWidth = 0.15;  // of distance / sqrt(mesh area)
 constexpr int kLeafSlots = 6;        // largest leaves listed in the signature
@@ -71,7 +94,8 @@ constexpr int kSigLeafArea = 6;
 constexpr int kSigLeafExtent = kSigLeafArea + kLeafSlots;
 constexpr int kSigAreaHistogram = kSigLeafExtent + kLeafSlots;
 constexpr int kSigEigenvalues = kSigAreaHistogram + kAreaBins;
-static_assert(kSigEigenvalues + kEigenvalues == kSigGlobalShape, "signature layout must fill kSignatureLength");
+static_assert(kSigEigenvalues + kEigenvalues == kSigGlobalShape && kSigGlobalShape + kGlobalShapeBins == kSigGlobalGeodesic,
+              "signature layout must fill kSignatureLength");
 
 /// Upper ends of the relative area bins but the last: half decades, so that
 /// finger tips (~1e-3) and torsos (> 0.1) land in different bins.
@@ -112,8 +136,27 @@ bool is_original(const Mesh& mesh, Index t, Index original_vertices) {
          mesh.triangles(t, 2) < original_vertices;
 }
 
-/// Geodesic extent of every region (see the file comment), unnormalized.
-std::vector<double> geodesic_extents(const MeshGraph& graph, const std::vector<double>& f, const ReebGraph& reeb) {
+/// Adds `weight` to the histogram h of `bins` bins (the first centred at
+/// 0.5, bin widths 1) at x >= 0, split linearly between the two nearest
+/// bin centres so that the histogram moves continuously with x (x beyond
+/// the last centre goes to the last bin).
+void add_to_histogram(double* h, int bins, double x, double weight) {
+  const double y = std::clamp(x - 0.5, 0.0, bins - 1.0);
+  const int b = std::min(static_cast<int>(y), bins - 2);
+  h[b] += weight * (b + 1 - y);
+  h[b + 1] += weight * (y - b);
+}
+
+/// What the searches inside the regions give (see the file comment).
+struct RegionGeodesics {
+  std::vector<double> extent;     ///< per node, unnormalized
+  std::vector<double> histogram;  ///< kNodeGeodesicHistogram, #nodes x kShapeBins, row-major
+};
+
+/// Geodesic extent and geodesic histogram of every region (see the file
+/// comment); `vertex_area` and `node_area` weigh the vertices and the regions.
+RegionGeodesics region_geodesics(const MeshGraph& graph, const std::vector<double>& f, const ReebGraph& reeb,
+                                 const std::vector<double>& vertex_area, const std::vector<double>& node_area) {
   const Index n = graph.num_vertices();
   // Vertices grouped by region (counting sort), ascending ids within a region.
   std::vector<Index> first(reeb.nodes.size() + 1, 0);
@@ -123,7 +166,10 @@ std::vector<double> geodesic_extents(const MeshGraph& graph, const std::vector<d
   std::vector<Index> fill(first.begin(), first.end() - 1);
   for (Index v = 0; v < n; ++v) members[at(fill[at(reeb.vertex_node[at(v)])]++)] = v;
 
-  std::vector<double> extent(reeb.nodes.size(), 0.0);
+  RegionGeodesics out;
+  std::vector<double>& extent = out.extent;
+  extent.assign(reeb.nodes.size(), 0.0);
+  out.histogram.assign(reeb.nodes.size() * kShapeBins, 0.0);
   std::vector<std::uint8_t> done(at(n), 0);
   // stamp[v] == node: v is in the region of node or next to it, where the
   // searches for node may go.
@@ -134,6 +180,9 @@ std::vector<double> geodesic_extents(const MeshGraph& graph, const std::vector<d
   options.labels = &stamp;
   for (Index node = 0; node < reeb.num_nodes(); ++node) {
     options.label = node;
+    double* histogram = out.histogram.data() + at(node) * kShapeBins;
+    const double area = node_area[at(node)];
+    const double bin = area > 0.0 ? 1.0 / (kGeodesicBinWidth * std::sqrt(area)) : 0.0;
     const Index* begin = members.data() + first[at(node)];
     const Index* end = members.data() + first[at(node) + 1];
     for (const Index* v = begin; v != end; ++v) {
@@ -153,14 +202,18 @@ std::vector<double> geodesic_extents(const MeshGraph& graph, const std::vector<d
                                     [&](Index w) { return reeb.vertex_node[at(w)] == node; });
       extent[at(node)] = std::max(extent[at(node)], field.distance[at(*far)]);
       for (const Index w : settled)
-        if (reeb.vertex_node[at(w)] == node) done[at(w)] = 1;
+        if (reeb.vertex_node[at(w)] == node) {
+          done[at(w)] = 1;
+          if (area > 0.0) add_to_histogram(histogram, kShapeBins, field.distance[at(w)] * bin, vertex_area[at(w)] / area);
+        }
     }
   }
-  return extent;
+  return out;
 }
 
 /// What one pass over the triangles gathers (see the file comment).
 struct TriangleSums {
+  std::vector<double> vertex_area;    ///< a third of the area of each triangle of the surface as read at its vertices
   std::vector<double> node_area;      ///< per node, over the surface as read
   double total_area = 0.0;            ///< of the surface as read
   std::vector<double> level_length;   ///< isocontour lengths, #nodes x kLevels, row-major
@@ -170,6 +223,7 @@ struct TriangleSums {
 TriangleSums triangle_sums(const Mesh& mesh, Index original_vertices, const std::vector<double>& f,
                            const ReebGraph& reeb) {
   TriangleSums sums;
+  sums.vertex_area.assign(at(mesh.num_vertices()), 0.0);
   sums.node_area.assign(reeb.nodes.size(), 0.0);
   sums.level_length.assign(reeb.nodes.size() * kLevels, 0.0);
   sums.border_length.assign(reeb.edges.size(), 0.0);
@@ -185,6 +239,7 @@ TriangleSums triangle_sums(const Mesh& mesh, Index original_vertices, const std:
       const double area = triangle_area(mesh, t);
       sums.total_area += area;
       for (const Index node : label) sums.node_area[at(node)] += area / 3.0;
+      for (const Index u : v) sums.vertex_area[at(u)] += area / 3.0;
     }
     const double lo = std::min({f[at(v[0])], f[at(v[1])], f[at(v[2])]});
     const double hi = std::max({f[at(v[0])], f[at(v[1])], f[at(v[2])]});
@@ -239,15 +294,29 @@ void shape_distribution(const Mesh& mesh, const WeightedTriangles& from, int sam
   if (!(from.total() > 0.0) || samples < 2) return;
   const std::vector<Vec3> points = sample_surface(mesh, from, samples, seed);
   const double scale = 1.0 / (bin_width * std::sqrt(from.total()));
+  const double pair_weight = 1.0 / (samples * (samples - 1) / 2.0);
   for (int i = 0; i < samples; ++i)
-    for (int j = i + 1; j < samples; ++j) {
-      const double x = std::clamp((points[at(i)] - points[at(j)]).norm() * scale - 0.5, 0.0, bins - 1.0);
-      const int b = std::min(static_cast<int>(x), bins - 2);
-      h[b] += b + 1 - x;
-      h[b + 1] += x - b;
-    }
-  const double pairs = samples * (samples - 1) / 2.0;
-  for (int b = 0; b < bins; ++b) h[b] /= pairs;
+    for (int j = i + 1; j < samples; ++j)
+      add_to_histogram(h, bins, (points[at(i)] - points[at(j)]).norm() * scale, pair_weight);
+}
+
+/// The signature's global geodesic histogram (kSigGlobalGeodesic, see the
+/// file comment) into h.
+void main_axis_histogram(const MeshGraph& graph, const FeaturePoints& features, const TriangleSums& sums, double* h) {
+  std::fill_n(h, kGlobalShapeBins, 0.0);
+  DijkstraSolver solver(graph);
+  const std::vector<double> d1 = solver.run({features.source1}).distance;
+  const std::vector<double>& d2 = solver.run({features.source2}).distance;
+  const double diameter = d1[at(features.source2)];
+  if (!(diameter > 0.0) || !(sums.total_area > 0.0)) return;
+  for (std::size_t v = 0; v < d1.size(); ++v) {
+    const double weight = 0.5 * sums.vertex_area[v] / sums.total_area;  // 0 for a vertex hole filling added
+    if (!(weight > 0.0)) continue;
+    const double position = std::abs(d1[v] - d2[v]) / diameter;
+    const double offset = std::max(0.0, d1[v] + d2[v] - diameter) / diameter;
+    add_to_histogram(h, kAxisBins, position / kAxisPositionBinWidth, weight);
+    add_to_histogram(h + kAxisBins, kAxisBins, offset / kAxisOffsetBinWidth, weight);
+  }
 }
 
 /// kNodeShapeHistogram of every region (#nodes x kShapeBins, row-major) and
@@ -315,11 +384,15 @@ void laplacian_spectrum(const ReebGraph& reeb, const std::vector<double>& degree
 }  // namespace
 
 GraphAttributes compute_attributes(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f,
-                                   double geodesic_diameter, const ReebGraph& reeb) {
+                                   const FeaturePoints& features, const ReebGraph& reeb) {
+  const double geodesic_diameter = features.diameter;
   const auto where = [&] { return mesh.source.empty() ? std::string("mesh in memory") : mesh.source; };
   if (reeb.nodes.empty())
     throw InvalidArgument("compute_attributes: " + where() +
                           " has no Reeb graph (analyzed with AnalysisOptions::reeb_graph = false)");
+  if (features.source1 < 0 || features.source1 >= mesh.num_vertices() || features.source2 < 0 ||
+      features.source2 >= mesh.num_vertices())
+    throw InvalidArgument("compute_attributes: " + where() + ": the feature points have no diameter ends in the mesh");
   if (reeb.vertex_node.size() != at(mesh.num_vertices()) || f.size() != at(mesh.num_vertices()) ||
       graph.num_vertices() != mesh.num_vertices())
     throw InvalidArgument("compute_attributes: " + where() +
@@ -327,7 +400,7 @@ GraphAttributes compute_attributes(const Mesh& mesh, const MeshGraph& graph, con
 
   const Index original_vertices = original_vertex_count(mesh);
   const TriangleSums sums = triangle_sums(mesh, original_vertices, f, reeb);
-  const std::vector<double> extent = geodesic_extents(graph, f, reeb);
+  const RegionGeodesics regions = region_geodesics(graph, f, reeb, sums.vertex_area, sums.node_area);
   std::array<double, kGlobalShapeBins> global_shape{};
   const std::vector<double> shape = shape_histograms(mesh, original_vertices, reeb, global_shape.data());
   const double length_unit = sums.total_area > 0.0 ? std::sqrt(sums.total_area) : 1.0;
@@ -353,7 +426,7 @@ GraphAttributes compute_attributes(const Mesh& mesh, const MeshGraph& graph, con
     row[kNodeFqMin] = node.fq_min;
     row[kNodeFqMax] = node.fq_max;
     row[kNodeFqSpan] = node.fq_max - node.fq_min;
-    row[kNodeGeodesicExtent] = extent[i] / diameter;
+    row[kNodeGeodesicExtent] = regions.extent[i] / diameter;
     row[kNodeMeanRadius] = level_sum / kLevels / (2.0 * static_cast<double>(EIGEN_PI)) / length_unit;
     row[kNodeVertexShare] = relative(vertices[i], original_vertices);
     row[kNodeDegree] = degree[i];
@@ -363,6 +436,7 @@ GraphAttributes compute_attributes(const Mesh& mesh, const MeshGraph& graph, con
       row[kNodeRadiusProfile + k] =
           sums.level_length[i * kLevels + static_cast<std::size_t>(k)] / (2.0 * static_cast<double>(EIGEN_PI)) / length_unit;
     std::copy_n(shape.data() + i * kShapeBins, kShapeBins, row + kNodeShapeHistogram);
+    std::copy_n(regions.histogram.data() + i * kShapeBins, kShapeBins, row + kNodeGeodesicHistogram);
   }
   out.edge.resize(reeb.edges.size() * kEdgeAttributeCount);
   for (std::size_t e = 0; e < reeb.edges.size(); ++e) {
@@ -397,6 +471,7 @@ GraphAttributes compute_attributes(const Mesh& mesh, const MeshGraph& graph, con
   largest(std::move(leaf_extent), sig + kSigLeafExtent, kLeafSlots);
   laplacian_spectrum(reeb, degree, sig + kSigEigenvalues);
   std::copy(global_shape.begin(), global_shape.end(), sig + kSigGlobalShape);
+  main_axis_histogram(graph, features, sums, sig + kSigGlobalGeodesic);
   return out;
 }
 

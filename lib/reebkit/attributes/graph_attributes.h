@@ -8,6 +8,7 @@
 
 #include "reebkit/attributes/graph_record.h"
 #include "reebkit/core/mesh.h"
+#include "reebkit/features/feature_points.h"
 #include "reebkit/mesh/mesh_graph.h"
 #include "reebkit/reeb/reeb_graph.h"
 
@@ -26,10 +27,12 @@ struct GraphAttributes {
 /// graph `graph`), with the columns of graph_record.h. Areas and shares count
 /// the surface as read (vertices added by hole filling, see
 /// original_vertex_count, are left out); geodesic extents are divided by
-/// `geodesic_diameter` (FeaturePoints::diameter, section 4.1.2).
+/// the geodesic diameter of the feature point search (`features`: its
+/// FeaturePoints::diameter, section 4.1.2; its diameter ends v_s1, v_s2 give
+/// the main axis).
 /// \pre reeb has nodes, and mesh, graph, fq and reeb.vertex_node agree in
 ///      vertex count; throws InvalidArgument otherwise.
 GraphAttributes compute_attributes(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& fq,
-                                   double geodesic_diameter, const ReebGraph& reeb);
+                                   const FeaturePoints& features, const ReebGraph& reeb);
 
 }  // namespace reebkit

@@ -11,7 +11,8 @@ const std::array<const char*, kNodeAttributeCount> kNodeAttributeNames = {
     "vertex_share",  "degree",       "start_type",   "end_type",     "radius_0",        "radius_1",
     "radius_2",      "radius_3",     "radius_4",     "radius_5",     "radius_6",        "radius_7",
     "shape_0",       "shape_1",      "shape_2",      "shape_3",      "shape_4",         "shape_5",
-    "shape_6",       "shape_7"};
+    "shape_6",       "shape_7",      "geodesic_0",   "geodesic_1",   "geodesic_2",      "geodesic_3",
+    "geodesic_4",    "geodesic_5",   "geodesic_6",   "geodesic_7"};
 
 const std::array<const char*, kEdgeAttributeCount> kEdgeAttributeNames = {"boundary_length", "event_fq"};
 
@@ -23,7 +24,10 @@ const std::array<const char*, kSignatureLength> kSignatureNames = {
     "laplacian_2",    "laplacian_3",    "laplacian_4",    "laplacian_5",    "laplacian_6",    "laplacian_7",
     "laplacian_8",    "laplacian_9",    "d2_0",           "d2_1",           "d2_2",           "d2_3",
     "d2_4",           "d2_5",           "d2_6",           "d2_7",           "d2_8",           "d2_9",
-    "d2_10",          "d2_11",          "d2_12",          "d2_13",          "d2_14",          "d2_15"};
+    "d2_10",          "d2_11",          "d2_12",          "d2_13",          "d2_14",          "d2_15",          "axis_position_0", "axis_position_1",
+    "axis_position_2", "axis_position_3", "axis_position_4", "axis_position_5", "axis_position_6", "axis_position_7",
+    "axis_offset_0",  "axis_offset_1",  "axis_offset_2",  "axis_offset_3",  "axis_offset_4",  "axis_offset_5",
+    "axis_offset_6",  "axis_offset_7"};
 
 std::int64_t independent_cycles(const GraphRecord& record) {
   // Union-find over the nodes counts the connected components.

@@ -33,13 +33,20 @@ enum NodeAttribute : int {
   /// Shape of the region: a histogram (kShapeBins bins, sums to 1) of the
   /// Euclidean distance between random points of the region, / sqrt(region
   /// area) (the D2 distribution of Osada et al. 2002, restricted to a part).
+  /// Changes when the part bends.
   kNodeShapeHistogram = kNodeRadiusProfile + 8,
-  kNodeAttributeCount = kNodeShapeHistogram + 8
+  /// Intrinsic shape of the region: a histogram (kShapeBins bins, sums to 1)
+  /// of the area of the region by geodesic distance (paths inside the
+  /// region) from its highest vertex, / sqrt(region area). Invariant to
+  /// bending.
+  kNodeGeodesicHistogram = kNodeShapeHistogram + 8,
+  kNodeAttributeCount = kNodeGeodesicHistogram + 8
 };
 
-/// Levels of kNodeRadiusProfile and bins of kNodeShapeHistogram.
+/// Levels of kNodeRadiusProfile and bins of kNodeShapeHistogram and kNodeGeodesicHistogram.
 inline constexpr int kRadiusProfileLevels = kNodeShapeHistogram - kNodeRadiusProfile;
-inline constexpr int kShapeBins = kNodeAttributeCount - kNodeShapeHistogram;
+inline constexpr int kShapeBins = kNodeGeodesicHistogram - kNodeShapeHistogram;
+static_assert(kNodeAttributeCount - kNodeGeodesicHistogram == kShapeBins, "both region histograms have kShapeBins bins");
 
 /// Columns of the edge attributes (GraphRecord::edge_attributes), in order.
 enum EdgeAttribute : int {
@@ -54,12 +61,22 @@ extern const std::array<const char*, kEdgeAttributeCount> kEdgeAttributeNames;
 
 /// Length of the per-graph signature vector used for nearest-neighbour
 /// pre-filtering (FLANN): fixed whatever the graph.
-inline constexpr int kSignatureLength = 48;
-/// The last kGlobalShapeBins entries of the signature: the D2 shape
-/// distribution of the whole surface (distances between random points /
-/// sqrt(mesh area), bins of 0.15, summing to 1), compared by the matcher.
+inline constexpr int kSignatureLength = 64;
+/// kGlobalShapeBins entries of the signature from kSigGlobalShape: the D2
+/// shape distribution of the whole surface (Euclidean distances between
+/// random points / sqrt(mesh area), bins of 0.15, summing to 1), compared by
+/// the matcher. Changes when a part moves.
 inline constexpr int kGlobalShapeBins = 16;
-inline constexpr int kSigGlobalShape = kSignatureLength - kGlobalShapeBins;
+inline constexpr int kSigGlobalShape = kSignatureLength - 2 * kGlobalShapeBins;
+/// The last kGlobalShapeBins entries: the intrinsic counterpart, the area of
+/// the surface by its place relative to the main axis, the geodesic path
+/// between the diameter ends v_s1, v_s2 (section 4.1.2), with d1, d2 the
+/// geodesic distances to them and D = d(v_s1, v_s2): along the axis, the
+/// axis position |d1 - d2| / D (0 midway, 1 at an end; 8 bins of 1/8,
+/// summing to 1/2), and off it, the axis offset (d1 + d2 - D) / D (0 on the
+/// axis; 8 bins of 1/16, summing to 1/2). Invariant to bending, and to
+/// exchanging the two ends.
+inline constexpr int kSigGlobalGeodesic = kSignatureLength - kGlobalShapeBins;
 /// Name of each signature entry.
 extern const std::array<const char*, kSignatureLength> kSignatureNames;
 

@@ -30,12 +30,13 @@ struct NodeCost {
     l1[F::kSqrtNeighbourArea] = o.structure_weight / 4.0;
     for (int k = 0; k < kRadiusProfileLevels; ++k) l1[at(F::kProfile + k)] = o.profile_weight / kRadiusProfileLevels;
     for (int k = 0; k < kShapeBins; ++k) l1[at(F::kShape + k)] = o.shape_weight / 2.0;
+    for (int k = 0; k < kShapeBins; ++k) l1[at(F::kGeodesicShape + k)] = o.geodesic_shape_weight / 2.0;
     structure = o.structure_weight / 4.0;
   }
   static std::size_t at(int k) { return static_cast<std::size_t>(k); }
 };
 
-/// a(i, j) + s(i, j) + p(i, j) + h(i, j) of the cost model, weighted: the
+/// a + s + p + h + h_g of the cost model at (i, j), weighted: the
 /// L1 block in four independent sums (a fixed order; the compiler may run
 /// them side by side), then the degree and type terms of s.
 double node_dissimilarity(const double* x, const double* y, const NodeCost& c) {
@@ -175,13 +176,19 @@ double match_rows(const MatchableGraph& a, const MatchableGraph& b, const Matchi
   return total_weight > 0.0 ? total / total_weight : 0.0;
 }
 
-/// global_shape_weight * g(A, B): half the L1 distance of the whole
-/// surfaces' D2 histograms, weighted (exactly symmetric: |x - y| = |y - x|).
-double global_shape_term(const MatchableGraph& a, const MatchableGraph& b, const MatchingOptions& o) {
-  if (o.global_shape_weight == 0.0) return 0.0;
+/// Half the L1 distance of two histograms times `weight` (0 without
+/// reading them when the weight is 0; exactly symmetric: |x - y| = |y - x|).
+double weighted_half_l1(const std::vector<double>& x, const std::vector<double>& y, double weight) {
+  if (weight == 0.0) return 0.0;
   double l1 = 0.0;
-  for (std::size_t k = 0; k < a.global_shape.size(); ++k) l1 += std::abs(a.global_shape[k] - b.global_shape[k]);
-  return o.global_shape_weight * l1 / 2.0;
+  for (std::size_t k = 0; k < x.size(); ++k) l1 += std::abs(x[k] - y[k]);
+  return weight * l1 / 2.0;
+}
+
+/// global_shape_weight * g(A, B) + global_geodesic_weight * g_g(A, B).
+double global_shape_term(const MatchableGraph& a, const MatchableGraph& b, const MatchingOptions& o) {
+  return weighted_half_l1(a.global_shape, b.global_shape, o.global_shape_weight) +
+         weighted_half_l1(a.global_geodesic, b.global_geodesic, o.global_geodesic_weight);
 }
 
 }  // namespace
@@ -212,7 +219,8 @@ MatchableGraph make_matchable_graph(const GraphRecord& entry) {
   if (entry.signature.size() != static_cast<std::size_t>(kSignatureLength))
     throw InvalidArgument("make_matchable_graph: entry '" + entry.name + "' has a signature of " +
                           std::to_string(entry.signature.size()) + " entries, not " + std::to_string(kSignatureLength));
-  g.global_shape.assign(entry.signature.begin() + kSigGlobalShape, entry.signature.end());
+  g.global_shape.assign(entry.signature.begin() + kSigGlobalShape, entry.signature.begin() + kSigGlobalGeodesic);
+  g.global_geodesic.assign(entry.signature.begin() + kSigGlobalGeodesic, entry.signature.end());
   const auto attribute = [&](std::size_t i, NodeAttribute c) { return entry.node_attributes[i * kNodeAttributeCount + c]; };
   for (std::size_t i = 0; i < n; ++i) g.relative_area[i] = attribute(i, kNodeRelativeArea);
   g.features.resize(n * MatchableGraph::kFeatureCount);
@@ -231,7 +239,10 @@ MatchableGraph make_matchable_graph(const GraphRecord& entry) {
     x[F::kStartType] = attribute(i, kNodeStartType);
     x[F::kEndType] = attribute(i, kNodeEndType);
     for (int k = 0; k < kRadiusProfileLevels; ++k) x[F::kProfile + k] = attribute(i, NodeAttribute(kNodeRadiusProfile + k));
-    for (int k = 0; k < kShapeBins; ++k) x[F::kShape + k] = attribute(i, NodeAttribute(kNodeShapeHistogram + k));
+    for (int k = 0; k < kShapeBins; ++k) {
+      x[F::kShape + k] = attribute(i, NodeAttribute(kNodeShapeHistogram + k));
+      x[F::kGeodesicShape + k] = attribute(i, NodeAttribute(kNodeGeodesicHistogram + k));
+    }
   }
   return g;
 }

@@ -16,11 +16,12 @@ namespace reebkit {
 /// w_i = relative area + min_node_weight. Matching node i of A to node j of
 /// B costs (w_i + w_j) / 2 * (attribute_weight * a(i, j) + structure_weight
 /// * s(i, j) + edge_weight * e(i, j) + profile_weight * p(i, j) +
-/// shape_weight * h(i, j)), leaving node i unmatched costs unmatched_cost *
-/// w_i; the graphs' part of the distance is the total cost of the cheapest
-/// correspondence over (W_A + W_B), W = sum of the weights, in [0,
-/// unmatched_cost], and the distance adds global_shape_weight * g(A, B).
-/// a, s, e, h and g are in [0, 1]:
+/// shape_weight * h(i, j) + geodesic_shape_weight * h_g(i, j)), leaving
+/// node i unmatched costs
+/// unmatched_cost * w_i; the graphs' part of the distance is the total cost
+/// of the cheapest correspondence over (W_A + W_B), W = sum of the weights,
+/// in [0, unmatched_cost], and the distance adds global_shape_weight * g(A,
+/// B) + global_geodesic_weight * g_g(A, B). All terms are in [0, 1]:
 /// - a: mean absolute difference of sqrt(relative area), f_q min, f_q max,
 ///   geodesic extent and mean radius (attributes/graph_attributes.h);
 /// - s: mean of the relative degree difference |d_i - d_j| / max(d_i, d_j),
@@ -29,17 +30,26 @@ namespace reebkit {
 /// - e: the share of matched neighbours of i and j whose partners are not
 ///   neighbours of j and i (edge consistency, from the correspondence);
 /// - p: mean absolute difference of the radius profiles (kNodeRadiusProfile);
-/// - h: half the L1 distance of the regions' shape histograms (kNodeShapeHistogram);
+/// - h: half the L1 distance of the regions' shape histograms
+///   (kNodeShapeHistogram, Euclidean: changes with the pose of the part);
+/// - h_g: half the L1 distance of the regions' geodesic histograms
+///   (kNodeGeodesicHistogram, invariant to bending);
 /// - g: half the L1 distance of the whole surfaces' D2 (signature entries
-///   kSigGlobalShape on), the one term not invariant to bending.
-/// Defaults: measured on SHREC07 (results/matching_weights.md).
+///   from kSigGlobalShape, Euclidean: changes with the pose);
+/// - g_g: half the L1 distance of the whole surfaces' geodesic histograms
+///   (signature entries from kSigGlobalGeodesic: area by position along and
+///   off the main axis, invariant to bending).
+/// Defaults: chosen by cross-validation between SHREC07 and the TOSCA poses
+/// (results/matching_weights.md).
 struct MatchingOptions {
   double attribute_weight = 4.0;   ///< weight of a(i, j)
   double structure_weight = 1.0;   ///< weight of s(i, j)
   double edge_weight = 0.25;       ///< weight of e(i, j)
   double profile_weight = 32.0;    ///< weight of p(i, j)
-  double shape_weight = 4.0;       ///< weight of h(i, j)
-  double global_shape_weight = 1.6;  ///< weight of g(A, B)
+  double shape_weight = 0.0;       ///< weight of h(i, j)
+  double geodesic_shape_weight = 2.0;  ///< weight of h_g(i, j)
+  double global_shape_weight = 0.8;  ///< weight of g(A, B)
+  double global_geodesic_weight = 0.8;  ///< weight of g_g(A, B)
   double unmatched_cost = 1.0;     ///< cost of deleting or inserting a node, per unit of node weight
   double min_node_weight = 0.01;   ///< added to the relative area so that area-less nodes still count
   /// Rounds of edge-consistency refinement: the assignment is solved again
@@ -61,8 +71,9 @@ struct MatchableGraph {
   /// Columns of `features`, all in [0, ~1]. The first kL1Block columns
   /// (zero-padded to a multiple of 4) enter the node cost as a weighted L1
   /// distance; degree and types follow.
-  enum Feature : int { kSqrtArea, kFqMin, kFqMax, kExtent, kRadius, kSqrtNeighbourArea, kProfile,
-                       kShape = kProfile + kRadiusProfileLevels, kL1End = kShape + kShapeBins,
+  enum Feature : int { kSqrtArea, kFqMin, kFqMax, kExtent, kRadius, kSqrtNeighbourArea,
+                       kProfile, kShape = kProfile + kRadiusProfileLevels, kGeodesicShape = kShape + kShapeBins,
+                       kL1End = kGeodesicShape + kShapeBins,
                        kL1Block = (kL1End + 3) / 4 * 4, kDegree = kL1Block, kStartType, kEndType, kFeatureCount };
   std::int32_t num_nodes = 0;
   std::vector<double> features;           ///< num_nodes x kFeatureCount, row-major
@@ -71,6 +82,7 @@ struct MatchableGraph {
   std::vector<std::int32_t> neighbours;
   std::vector<char> adjacent;             ///< num_nodes x num_nodes, 1 where an edge joins the nodes
   std::vector<double> global_shape;       ///< kGlobalShapeBins: the D2 of the whole surface (signature)
+  std::vector<double> global_geodesic;    ///< kGlobalShapeBins: its geodesic histogram (signature)
 };
 
 /// The matchable form of an entry's graph.

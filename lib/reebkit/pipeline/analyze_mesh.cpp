@@ -32,7 +32,7 @@ MeshAnalysis analyze_mesh(Mesh mesh, const AnalysisOptions& options) {
 }
 
 GraphAttributes compute_attributes(const MeshAnalysis& analysis) {
-  return compute_attributes(analysis.mesh, analysis.graph, analysis.fq.value, analysis.features.diameter,
+  return compute_attributes(analysis.mesh, analysis.graph, analysis.fq.value, analysis.features,
                             analysis.reeb);
 }
 

@@ -22,8 +22,9 @@ namespace reebkit {
 /// 3: the groups `analysis_options` and `classes`. 4: no variable-length
 /// strings (names, classes and errors as UTF-8 bytes + offsets, string
 /// attributes fixed-length): HDF5 reads variable-length strings from its
-/// global heap trusting the stored lengths.
-inline constexpr int kCollectionLayoutVersion = 4;
+/// global heap trusting the stored lengths. 5: the pose-invariant
+/// attributes (node_attr 34 columns, signature 64).
+inline constexpr int kCollectionLayoutVersion = 5;
 
 /// Where the file came from: file attributes, and two groups.
 struct Provenance {
