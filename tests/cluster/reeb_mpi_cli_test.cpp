@@ -133,8 +133,8 @@ TEST_F(ReebMpiCli, DistancesOfTwoAndThreeProcessesAreBitIdenticalToOneProcess) {
                                               " -o " + shell_quoted(*dir_ / matrix) + " --ascii " +
                                               shell_quoted(*dir_ / ascii) + " 2>&1");
     ASSERT_EQ(many, 0) << many_out;
-    EXPECT_TRUE(file_bytes(*dir_ / matrix) == one);
-    EXPECT_TRUE(file_bytes(*dir_ / ascii) == file_bytes(*dir_ / "d1.txt"));
+    EXPECT_TRUE(file_bytes(*dir_ / matrix) == one) << many_out;
+    EXPECT_TRUE(file_bytes(*dir_ / ascii) == file_bytes(*dir_ / "d1.txt")) << many_out;
     // One process prints.
     EXPECT_EQ(many_out.find("rows in the"), many_out.rfind("rows in the")) << many_out;
   }
