@@ -7,7 +7,6 @@
 #include "reebkit/io/off.h"
 #include "reebkit/io/ply.h"
 #include "reebkit/io/stl.h"
-#include "support/sanitizers.h"
 
 #include <gtest/gtest.h>
 #include <sys/resource.h>
@@ -21,6 +20,14 @@
 #include <string>
 #include <utility>
 #include <vector>
+
+#if defined(__SANITIZE_ADDRESS__)
+#define REEBKIT_TEST_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define REEBKIT_TEST_ASAN 1
+#endif
+#endif
 
 namespace reebkit::test {
 namespace {
