@@ -118,7 +118,8 @@ TEST(Assignment, SolveOrLeaveIsSolveOnThePaddedMatrix) {
     const int padded_cols = cols + rows;
     std::vector<double> padded(static_cast<std::size_t>(rows * padded_cols), 1e12);
     for (int i = 0; i < rows; ++i) {
-      std::copy_n(&cost[static_cast<std::size_t>(i * cols)], cols, &padded[static_cast<std::size_t>(i * padded_cols)]);
+      // iterators, not &cost[k]: with 0 columns `cost` is empty (UBSan: reference binding to null pointer)
+      std::copy_n(cost.begin() + i * cols, cols, padded.begin() + i * padded_cols);
       padded[static_cast<std::size_t>(i * padded_cols + cols + i)] = 0.0;
     }
     std::vector<std::int32_t> got, want;
