@@ -38,14 +38,14 @@ struct PinnedGraph {
 // eight 2, elk 1, the others 0 = their genus). Update here, and only here,
 // when the graph or the attributes change on purpose.
 constexpr PinnedGraph kPinned[] = {
-    {"anchor.off", 15, 2, 4, 0x192d8525beb0aee3ull},
-    {"bunny.off", 5, 3, 0, 0x5aa58175d490a625ull},
-    {"cactus.off", 5, 3, 0, 0x690280ccb71acb8bull},
-    {"cow.off", 19, 10, 0, 0xc963866feaf04e8eull},
-    {"eight.off", 9, 2, 2, 0xe800192727be2c4cull},
-    {"elk.off", 10, 4, 1, 0x1a68841c32b36327ull},
-    {"hand.off", 3, 2, 0, 0x5d1a006597754243ull},
-    {"helmet.off", 12, 2, 3, 0x64274b38dff2fdd6ull},
+    {"anchor.off", 15, 2, 4, 0x75bf9a1d6202e7e3ull},
+    {"bunny.off", 5, 3, 0, 0x180a31f2d9608715ull},
+    {"cactus.off", 5, 3, 0, 0xf635fb568aec444aull},
+    {"cow.off", 19, 10, 0, 0x2dd9af7ef3305bf0ull},
+    {"eight.off", 9, 2, 2, 0xecb7eea8cf5e8217ull},
+    {"elk.off", 10, 4, 1, 0x93e198a437cb5fe4ull},
+    {"hand.off", 3, 2, 0, 0xbd212d58835fca1ull},
+    {"helmet.off", 12, 2, 3, 0x44df547309647becull},
 };
 
 // Retrieval on the variants collection (48 meshes, 8 classes of 6), as the

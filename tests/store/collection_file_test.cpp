@@ -234,7 +234,7 @@ TEST(CollectionFile, ErrorsNameTheFile) {
   const std::string no_layout = test::thrown_message<Error>([&] { CollectionReader r(other); });
   EXPECT_TRUE(contains(no_layout, other.string()) && contains(no_layout, "not a reebkit collection")) << no_layout;
 
-  // Layout 2 (before the analysis options and classes were stored) and a future one.
+  // The previous layout (3: before the pose-invariant attribute columns) and a future one.
   for (const int version : {kCollectionLayoutVersion - 1, kCollectionLayoutVersion + 1}) {
     const auto other_layout = dir / ("layout" + std::to_string(version) + ".h5");
     write_entries(other_layout, 0, 3, false);

@@ -46,11 +46,11 @@ struct MatchingOptions {
   double structure_weight = 1.0;   ///< weight of s(i, j)
   double edge_weight = 0.25;       ///< weight of e(i, j)
   double profile_weight = 32.0;    ///< weight of p(i, j)
-  double shape_weight = 0.0;       ///< weight of h(i, j)
+  double shape_weight = 2.0;       ///< weight of h(i, j)
   double geodesic_shape_weight = 2.0;  ///< weight of h_g(i, j)
-  double global_shape_weight = 0.8;  ///< weight of g(A, B)
-  double global_geodesic_weight = 0.8;  ///< weight of g_g(A, B)
-  double unmatched_cost = 1.0;     ///< cost of deleting or inserting a node, per unit of node weight
+  double global_shape_weight = 1.6;  ///< weight of g(A, B)
+  double global_geodesic_weight = 0.0;  ///< weight of g_g(A, B)
+  double unmatched_cost = 1.5;     ///< cost of deleting or inserting a node, per unit of node weight
   double min_node_weight = 0.01;   ///< added to the relative area so that area-less nodes still count
   /// Rounds of edge-consistency refinement: the assignment is solved again
   /// with e(i, j) from the previous correspondence (the first solve has e =
