@@ -166,20 +166,27 @@ int main(int argc, char** argv) {
     std::vector<Histogram> d2_histograms(files.size()), geodesic_histograms(files.size());
     std::vector<reebkit::ShapeDna> spectra(files.size());
     std::vector<double> d2_ms(files.size()), geodesic_ms(files.size()), shape_dna_ms(files.size());
+    std::vector<std::string> failure(files.size());  // an exception may not leave the parallel loop
 #pragma omp parallel for schedule(dynamic)
     for (Index i = 0; i < n; ++i) {
       const auto k = static_cast<std::size_t>(i);
-      const Mesh mesh = std::move(reebkit::load_mesh(files[k]).components.front());
-      double t = omp_get_wtime();
-      d2_histograms[k] = d2(mesh);
-      d2_ms[k] = 1e3 * (omp_get_wtime() - t);
-      t = omp_get_wtime();
-      geodesic_histograms[k] = geodesic(mesh);
-      geodesic_ms[k] = 1e3 * (omp_get_wtime() - t);
-      t = omp_get_wtime();
-      spectra[k] = reebkit::shape_dna(mesh);
-      shape_dna_ms[k] = 1e3 * (omp_get_wtime() - t);
+      try {
+        const Mesh mesh = std::move(reebkit::load_mesh(files[k]).components.front());
+        double t = omp_get_wtime();
+        d2_histograms[k] = d2(mesh);
+        d2_ms[k] = 1e3 * (omp_get_wtime() - t);
+        t = omp_get_wtime();
+        geodesic_histograms[k] = geodesic(mesh);
+        geodesic_ms[k] = 1e3 * (omp_get_wtime() - t);
+        t = omp_get_wtime();
+        spectra[k] = reebkit::shape_dna(mesh);
+        shape_dna_ms[k] = 1e3 * (omp_get_wtime() - t);
+      } catch (const std::exception& e) {
+        failure[k] = e.what();
+      }
     }
+    for (const std::string& message : failure)
+      if (!message.empty()) throw reebkit::Error(message);
     const std::string prefix = argv[3];
     const auto l1_of = [](const std::vector<Histogram>& h) {
       return [&h](std::size_t i, std::size_t j) { return l1_distance(h[i], h[j]); };

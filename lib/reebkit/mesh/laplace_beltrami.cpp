@@ -15,16 +15,15 @@ LaplaceBeltrami laplace_beltrami(const Mesh& mesh, const LaplaceBeltramiOptions&
   std::vector<Triplet> stiffness, mass;
   stiffness.reserve(static_cast<std::size_t>(mesh.num_triangles()) * 9);
   mass.reserve(static_cast<std::size_t>(mesh.num_triangles()) * 9);
+  std::vector<bool> covered(static_cast<std::size_t>(mesh.num_vertices()), false);  // on a triangle with area
   for (Index t = 0; t < mesh.num_triangles(); ++t) {
     const Index v[3] = {mesh.triangles(t, 0), mesh.triangles(t, 1), mesh.triangles(t, 2)};
     const Vec3 p[3] = {mesh.vertices.row(v[0]), mesh.vertices.row(v[1]), mesh.vertices.row(v[2])};
     const double twice_area = (p[1] - p[0]).cross(p[2] - p[0]).norm();
     const double longest = std::max({(p[1] - p[0]).squaredNorm(), (p[2] - p[1]).squaredNorm(),
                                       (p[0] - p[2]).squaredNorm()});
-    if (!(twice_area > 1e-12 * longest))
-      throw InvalidMeshError(source, "triangle " + std::to_string(t) +
-                                         " has zero area: its cotangents, and the Laplace-Beltrami operator, are "
-                                         "undefined");
+    if (!(twice_area > 1e-12 * longest)) continue;  // spans no surface; its cotangents are undefined
+    for (const Index corner : v) covered[static_cast<std::size_t>(corner)] = true;
     for (int k = 0; k < 3; ++k) {
       // The angle at corner k is opposite the edge (i, j); its cotangent is
       // dot / |cross| of the two edge vectors leaving the corner, and
@@ -45,6 +44,11 @@ LaplaceBeltrami laplace_beltrami(const Mesh& mesh, const LaplaceBeltramiOptions&
       for (int b = 0; b < 3; ++b) mass.emplace_back(v[a], v[b], area / (a == b ? 6 : 12));
     }
   }
+  const auto bare = std::find(covered.begin(), covered.end(), false);
+  if (bare != covered.end())
+    throw InvalidMeshError(source, "vertex " + std::to_string(bare - covered.begin()) +
+                                       " lies on triangles of zero area only: the Laplace-Beltrami operator is "
+                                       "undefined there");
   const Eigen::Index n = mesh.num_vertices();
   LaplaceBeltrami result;
   result.stiffness.resize(n, n);

@@ -48,7 +48,7 @@ struct ShapeDna {
 /// each adds a zero eigenvalue). Meshes with boundary get their Neumann
 /// spectrum. Throws InvalidArgument for options.eigenvalues < 1 or a shift
 /// not negative, InvalidMeshError naming mesh.source for a degenerate mesh
-/// (see laplace_beltrami), one with at most eigenvalues + 1 vertices, or
+/// (see laplace_beltrami: triangles of zero area are left out), one with at most eigenvalues + 1 vertices, or
 /// one on which the iterations do not converge.
 ShapeDna shape_dna(const Mesh& mesh, const ShapeDnaOptions& options = {});
 
