@@ -190,6 +190,24 @@ TEST(Ply, ElementsAfterFacesAndBeforeVertices) {
   }
 }
 
+TEST(Ply, ABinaryElementWithoutPropertiesHoldsNoBytesWhateverItsCount) {
+  // Found by fuzz_ply (fuzz/corpus/ply/zero_byte_element_timeout.ply, which
+  // the fuzz run replays with its 10 s limit per input): 10^9 items of zero
+  // bytes each were read one by one. Here: the file reads whole.
+  std::string bytes =
+      "ply\nformat binary_little_endian 1.0\nelement junk 1142632412\nelement vertex 3\n"
+      "property float x\nproperty float y\nproperty float z\nelement face 1\n"
+      "property list uchar int vertex_indices\nend_header\n";
+  const float xyz[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  bytes.append(reinterpret_cast<const char*>(xyz), sizeof xyz);
+  const std::int32_t corners[3] = {0, 1, 2};
+  bytes.push_back(3);
+  bytes.append(reinterpret_cast<const char*>(corners), sizeof corners);
+  const PolygonSoup soup = parse_ply(bytes, "junk.ply");
+  EXPECT_EQ(soup.vertices.rows(), 3);
+  EXPECT_EQ(soup.face_offset.size(), 2u);
+}
+
 TEST(Ply, ColorsAsBytesAndAsFloats) {
   const Elem bytes = {"vertex",
                       {{"float", "x"}, {"float", "y"}, {"float", "z"}, {"uchar", "red"}, {"uchar", "green"}, {"uchar", "blue"}},

@@ -352,6 +352,8 @@ template <typename Values>
 PolygonSoup read_body(Values& in, const Header& header, std::size_t body_bytes, std::string source) {
   Collected out;
   for (const Element& element : header.elements) {
+    // A binary element without properties holds no bytes, whatever its count.
+    if (element.properties.empty() && header.encoding != PlyEncoding::Ascii) continue;
     reserve(element, header, body_bytes, out);
     std::int64_t item = 0;
     try {
