@@ -35,6 +35,7 @@
 #include <cstring>
 #include <ctime>
 #include <limits>
+#include <thread>
 #include <unordered_map>
 
 namespace reebkit {
@@ -844,7 +845,15 @@ void CollectionWriter::Impl::create(const fs::path& target, const Provenance& pr
   const hsize_t one[1] = {1};
   tables.count = file.createDataSet("count", H5::PredType::NATIVE_INT64, H5::DataSpace(1, one));
   tables.count.write(&zero, H5::PredType::NATIVE_INT64);
-  if (H5Fstart_swmr_write(file.getId()) < 0) throw H5::FileIException("H5Fstart_swmr_write", "failed");
+  // Entering SWMR mode takes HDF5's file lock anew; a reader that opened the
+  // new file a moment before (`reeb info` on a run in progress, a process
+  // polling for it) holds it for as long as it reads the header, so the
+  // switch is tried again for up to a second before it counts as a failure.
+  for (int attempt = 0; H5Fstart_swmr_write(file.getId()) < 0; ++attempt) {
+    if (attempt == 50)
+      throw H5::FileIException("H5Fstart_swmr_write", "failed (another process keeps the file open?)");
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
 }
 
 void CollectionWriter::Impl::write_batch() {
