@@ -180,6 +180,8 @@ void bind_graph(py::module_& m) {
       .def_readwrite("geodesic_shape_weight", &MatchingOptions::geodesic_shape_weight)
       .def_readwrite("global_shape_weight", &MatchingOptions::global_shape_weight)
       .def_readwrite("global_geodesic_weight", &MatchingOptions::global_geodesic_weight)
+      .def_readwrite("spectrum_weight", &MatchingOptions::spectrum_weight)
+      .def_readwrite("global_spectrum_weight", &MatchingOptions::global_spectrum_weight)
       .def_readwrite("unmatched_cost", &MatchingOptions::unmatched_cost)
       .def_readwrite("min_node_weight", &MatchingOptions::min_node_weight)
       .def_readwrite("refine_rounds", &MatchingOptions::refine_rounds)

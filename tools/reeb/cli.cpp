@@ -103,6 +103,10 @@ po::options_description matching_options(MatchingOptions& matching) {
        "weight of g: D2 shape distributions of the whole surfaces")
       ("global-geodesic-weight", defaulted(&matching.global_geodesic_weight),
        "weight of g_g: geodesic histograms of the whole surfaces")
+      ("spectrum-weight", defaulted(&matching.spectrum_weight),
+       "weight of r: Laplace-Beltrami spectra of the regions")
+      ("global-spectrum-weight", defaulted(&matching.global_spectrum_weight),
+       "weight of g_s: Laplace-Beltrami spectra of the whole surfaces")
       ("unmatched-cost", defaulted(&matching.unmatched_cost),
        "cost of deleting or inserting a node, per unit of node weight")
       ("min-node-weight", defaulted(&matching.min_node_weight),

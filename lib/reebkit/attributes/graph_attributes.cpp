@@ -57,6 +57,7 @@
 //   vertex, v_t of the step where the two regions meet.
 #include "reebkit/attributes/graph_attributes.h"
 
+#include "reebkit/attributes/region_spectra.h"
 #include "reebkit/core/error.h"
 #include "reebkit/geodesic/dijkstra.h"
 #include "reebkit/mesh/hole_filling.h"
@@ -403,6 +404,7 @@ GraphAttributes compute_attributes(const Mesh& mesh, const MeshGraph& graph, con
   const RegionGeodesics regions = region_geodesics(graph, f, reeb, sums.vertex_area, sums.node_area);
   std::array<double, kGlobalShapeBins> global_shape{};
   const std::vector<double> shape = shape_histograms(mesh, original_vertices, reeb, global_shape.data());
+  const SurfaceSpectra spectra = surface_spectra(mesh, reeb.vertex_node, reeb.num_nodes());
   const double length_unit = sums.total_area > 0.0 ? std::sqrt(sums.total_area) : 1.0;
   const double diameter = geodesic_diameter > 0.0 ? geodesic_diameter : 1.0;
   const auto relative = [](double value, double whole) { return whole > 0.0 ? value / whole : 0.0; };
@@ -437,6 +439,7 @@ GraphAttributes compute_attributes(const Mesh& mesh, const MeshGraph& graph, con
           sums.level_length[i * kLevels + static_cast<std::size_t>(k)] / (2.0 * static_cast<double>(EIGEN_PI)) / length_unit;
     std::copy_n(shape.data() + i * kShapeBins, kShapeBins, row + kNodeShapeHistogram);
     std::copy_n(regions.histogram.data() + i * kShapeBins, kShapeBins, row + kNodeGeodesicHistogram);
+    std::copy_n(spectra.region.data() + i * kRegionSpectrumLength, kRegionSpectrumLength, row + kNodeSpectrum);
   }
   out.edge.resize(reeb.edges.size() * kEdgeAttributeCount);
   for (std::size_t e = 0; e < reeb.edges.size(); ++e) {
@@ -472,6 +475,7 @@ GraphAttributes compute_attributes(const Mesh& mesh, const MeshGraph& graph, con
   laplacian_spectrum(reeb, degree, sig + kSigEigenvalues);
   std::copy(global_shape.begin(), global_shape.end(), sig + kSigGlobalShape);
   main_axis_histogram(graph, features, sums, sig + kSigGlobalGeodesic);
+  std::copy(spectra.global.begin(), spectra.global.end(), sig + kSigGlobalSpectrum);
   return out;
 }
 

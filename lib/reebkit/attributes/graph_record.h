@@ -40,13 +40,20 @@ enum NodeAttribute : int {
   /// region) from its highest vertex, / sqrt(region area). Invariant to
   /// bending.
   kNodeGeodesicHistogram = kNodeShapeHistogram + 8,
-  kNodeAttributeCount = kNodeGeodesicHistogram + 8
+  /// Laplace-Beltrami spectrum of the region (attributes/region_spectra.h):
+  /// its first kRegionSpectrumLength Neumann eigenvalues lambda_k, each as
+  /// s / (1 + s) with s = lambda_k x region area / (4 pi k). Invariant to
+  /// bending; changes with the part's proportions.
+  kNodeSpectrum = kNodeGeodesicHistogram + 8,
+  kNodeAttributeCount = kNodeSpectrum + 6
 };
 
 /// Levels of kNodeRadiusProfile and bins of kNodeShapeHistogram and kNodeGeodesicHistogram.
 inline constexpr int kRadiusProfileLevels = kNodeShapeHistogram - kNodeRadiusProfile;
 inline constexpr int kShapeBins = kNodeGeodesicHistogram - kNodeShapeHistogram;
-static_assert(kNodeAttributeCount - kNodeGeodesicHistogram == kShapeBins, "both region histograms have kShapeBins bins");
+static_assert(kNodeSpectrum - kNodeGeodesicHistogram == kShapeBins, "both region histograms have kShapeBins bins");
+/// Eigenvalues of kNodeSpectrum.
+inline constexpr int kRegionSpectrumLength = kNodeAttributeCount - kNodeSpectrum;
 
 /// Columns of the edge attributes (GraphRecord::edge_attributes), in order.
 enum EdgeAttribute : int {
@@ -59,16 +66,13 @@ enum EdgeAttribute : int {
 extern const std::array<const char*, kNodeAttributeCount> kNodeAttributeNames;
 extern const std::array<const char*, kEdgeAttributeCount> kEdgeAttributeNames;
 
-/// Length of the per-graph signature vector used for nearest-neighbour
-/// pre-filtering (FLANN): fixed whatever the graph.
-inline constexpr int kSignatureLength = 64;
 /// kGlobalShapeBins entries of the signature from kSigGlobalShape: the D2
 /// shape distribution of the whole surface (Euclidean distances between
 /// random points / sqrt(mesh area), bins of 0.15, summing to 1), compared by
 /// the matcher. Changes when a part moves.
 inline constexpr int kGlobalShapeBins = 16;
-inline constexpr int kSigGlobalShape = kSignatureLength - 2 * kGlobalShapeBins;
-/// The last kGlobalShapeBins entries: the intrinsic counterpart, the area of
+inline constexpr int kSigGlobalShape = 32;
+/// The next kGlobalShapeBins entries: the intrinsic counterpart, the area of
 /// the surface by its place relative to the main axis, the geodesic path
 /// between the diameter ends v_s1, v_s2 (section 4.1.2), with d1, d2 the
 /// geodesic distances to them and D = d(v_s1, v_s2): along the axis, the
@@ -76,7 +80,16 @@ inline constexpr int kSigGlobalShape = kSignatureLength - 2 * kGlobalShapeBins;
 /// summing to 1/2), and off it, the axis offset (d1 + d2 - D) / D (0 on the
 /// axis; 8 bins of 1/16, summing to 1/2). Invariant to bending, and to
 /// exchanging the two ends.
-inline constexpr int kSigGlobalGeodesic = kSignatureLength - kGlobalShapeBins;
+inline constexpr int kSigGlobalGeodesic = kSigGlobalShape + kGlobalShapeBins;
+/// The last kGlobalSpectrumLength entries: the Laplace-Beltrami spectrum of
+/// the whole surface (its Shape-DNA, attributes/region_spectra.h), lambda_1
+/// .. lambda_16 each as s / (1 + s) with s = lambda_k x area / (4 pi k).
+/// Invariant to bending.
+inline constexpr int kGlobalSpectrumLength = 16;
+inline constexpr int kSigGlobalSpectrum = kSigGlobalGeodesic + kGlobalShapeBins;
+/// Length of the per-graph signature vector used for nearest-neighbour
+/// pre-filtering (FLANN): fixed whatever the graph, every entry in [0, 1].
+inline constexpr int kSignatureLength = kSigGlobalSpectrum + kGlobalSpectrumLength;
 /// Name of each signature entry.
 extern const std::array<const char*, kSignatureLength> kSignatureNames;
 

@@ -31,12 +31,13 @@ struct NodeCost {
     for (int k = 0; k < kRadiusProfileLevels; ++k) l1[at(F::kProfile + k)] = o.profile_weight / kRadiusProfileLevels;
     for (int k = 0; k < kShapeBins; ++k) l1[at(F::kShape + k)] = o.shape_weight / 2.0;
     for (int k = 0; k < kShapeBins; ++k) l1[at(F::kGeodesicShape + k)] = o.geodesic_shape_weight / 2.0;
+    for (int k = 0; k < kRegionSpectrumLength; ++k) l1[at(F::kSpectrum + k)] = o.spectrum_weight / kRegionSpectrumLength;
     structure = o.structure_weight / 4.0;
   }
   static std::size_t at(int k) { return static_cast<std::size_t>(k); }
 };
 
-/// a + s + p + h + h_g of the cost model at (i, j), weighted: the
+/// a + s + p + h + h_g + r of the cost model at (i, j), weighted: the
 /// L1 block in four independent sums (a fixed order; the compiler may run
 /// them side by side), then the degree and type terms of s.
 double node_dissimilarity(const double* x, const double* y, const NodeCost& c) {
@@ -185,10 +186,13 @@ double weighted_half_l1(const std::vector<double>& x, const std::vector<double>&
   return weight * l1 / 2.0;
 }
 
-/// global_shape_weight * g(A, B) + global_geodesic_weight * g_g(A, B).
+/// global_shape_weight * g(A, B) + global_geodesic_weight * g_g(A, B) +
+/// global_spectrum_weight * g_s(A, B) (g_s: the mean absolute difference,
+/// twice the half L1 distance over the entries).
 double global_shape_term(const MatchableGraph& a, const MatchableGraph& b, const MatchingOptions& o) {
   return weighted_half_l1(a.global_shape, b.global_shape, o.global_shape_weight) +
-         weighted_half_l1(a.global_geodesic, b.global_geodesic, o.global_geodesic_weight);
+         weighted_half_l1(a.global_geodesic, b.global_geodesic, o.global_geodesic_weight) +
+         weighted_half_l1(a.global_spectrum, b.global_spectrum, 2.0 * o.global_spectrum_weight / kGlobalSpectrumLength);
 }
 
 }  // namespace
@@ -220,7 +224,8 @@ MatchableGraph make_matchable_graph(const GraphRecord& entry) {
     throw InvalidArgument("make_matchable_graph: entry '" + entry.name + "' has a signature of " +
                           std::to_string(entry.signature.size()) + " entries, not " + std::to_string(kSignatureLength));
   g.global_shape.assign(entry.signature.begin() + kSigGlobalShape, entry.signature.begin() + kSigGlobalGeodesic);
-  g.global_geodesic.assign(entry.signature.begin() + kSigGlobalGeodesic, entry.signature.end());
+  g.global_geodesic.assign(entry.signature.begin() + kSigGlobalGeodesic, entry.signature.begin() + kSigGlobalSpectrum);
+  g.global_spectrum.assign(entry.signature.begin() + kSigGlobalSpectrum, entry.signature.end());
   const auto attribute = [&](std::size_t i, NodeAttribute c) { return entry.node_attributes[i * kNodeAttributeCount + c]; };
   for (std::size_t i = 0; i < n; ++i) g.relative_area[i] = attribute(i, kNodeRelativeArea);
   g.features.resize(n * MatchableGraph::kFeatureCount);
@@ -243,6 +248,7 @@ MatchableGraph make_matchable_graph(const GraphRecord& entry) {
       x[F::kShape + k] = attribute(i, NodeAttribute(kNodeShapeHistogram + k));
       x[F::kGeodesicShape + k] = attribute(i, NodeAttribute(kNodeGeodesicHistogram + k));
     }
+    for (int k = 0; k < kRegionSpectrumLength; ++k) x[F::kSpectrum + k] = attribute(i, NodeAttribute(kNodeSpectrum + k));
   }
   return g;
 }

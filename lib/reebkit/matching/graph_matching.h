@@ -16,12 +16,14 @@ namespace reebkit {
 /// w_i = relative area + min_node_weight. Matching node i of A to node j of
 /// B costs (w_i + w_j) / 2 * (attribute_weight * a(i, j) + structure_weight
 /// * s(i, j) + edge_weight * e(i, j) + profile_weight * p(i, j) +
-/// shape_weight * h(i, j) + geodesic_shape_weight * h_g(i, j)), leaving
+/// shape_weight * h(i, j) + geodesic_shape_weight * h_g(i, j) +
+/// spectrum_weight * r(i, j)), leaving
 /// node i unmatched costs
 /// unmatched_cost * w_i; the graphs' part of the distance is the total cost
 /// of the cheapest correspondence over (W_A + W_B), W = sum of the weights,
 /// in [0, unmatched_cost], and the distance adds global_shape_weight * g(A,
-/// B) + global_geodesic_weight * g_g(A, B). All terms are in [0, 1]:
+/// B) + global_geodesic_weight * g_g(A, B) + global_spectrum_weight * g_s(A,
+/// B). All terms are in [0, 1]:
 /// - a: mean absolute difference of sqrt(relative area), f_q min, f_q max,
 ///   geodesic extent and mean radius (attributes/graph_attributes.h);
 /// - s: mean of the relative degree difference |d_i - d_j| / max(d_i, d_j),
@@ -34,11 +36,16 @@ namespace reebkit {
 ///   (kNodeShapeHistogram, Euclidean: changes with the pose of the part);
 /// - h_g: half the L1 distance of the regions' geodesic histograms
 ///   (kNodeGeodesicHistogram, invariant to bending);
+/// - r: mean absolute difference of the regions' Laplace-Beltrami spectra
+///   (kNodeSpectrum, invariant to bending);
 /// - g: half the L1 distance of the whole surfaces' D2 (signature entries
 ///   from kSigGlobalShape, Euclidean: changes with the pose);
 /// - g_g: half the L1 distance of the whole surfaces' geodesic histograms
 ///   (signature entries from kSigGlobalGeodesic: area by position along and
-///   off the main axis, invariant to bending).
+///   off the main axis, invariant to bending);
+/// - g_s: mean absolute difference of the whole surfaces' Laplace-Beltrami
+///   spectra (signature entries from kSigGlobalSpectrum, invariant to
+///   bending).
 /// Defaults: chosen by cross-validation between SHREC07 and the TOSCA poses
 /// (results/matching_weights.md).
 struct MatchingOptions {
@@ -50,6 +57,8 @@ struct MatchingOptions {
   double geodesic_shape_weight = 2.0;  ///< weight of h_g(i, j)
   double global_shape_weight = 1.6;  ///< weight of g(A, B)
   double global_geodesic_weight = 0.0;  ///< weight of g_g(A, B)
+  double spectrum_weight = 0.0;          ///< weight of r(i, j)
+  double global_spectrum_weight = 0.0;   ///< weight of g_s(A, B)
   double unmatched_cost = 1.5;     ///< cost of deleting or inserting a node, per unit of node weight
   double min_node_weight = 0.01;   ///< added to the relative area so that area-less nodes still count
   /// Rounds of edge-consistency refinement: the assignment is solved again
@@ -73,7 +82,7 @@ struct MatchableGraph {
   /// distance; degree and types follow.
   enum Feature : int { kSqrtArea, kFqMin, kFqMax, kExtent, kRadius, kSqrtNeighbourArea,
                        kProfile, kShape = kProfile + kRadiusProfileLevels, kGeodesicShape = kShape + kShapeBins,
-                       kL1End = kGeodesicShape + kShapeBins,
+                       kSpectrum = kGeodesicShape + kShapeBins, kL1End = kSpectrum + kRegionSpectrumLength,
                        kL1Block = (kL1End + 3) / 4 * 4, kDegree = kL1Block, kStartType, kEndType, kFeatureCount };
   std::int32_t num_nodes = 0;
   std::vector<double> features;           ///< num_nodes x kFeatureCount, row-major
@@ -83,6 +92,7 @@ struct MatchableGraph {
   std::vector<char> adjacent;             ///< num_nodes x num_nodes, 1 where an edge joins the nodes
   std::vector<double> global_shape;       ///< kGlobalShapeBins: the D2 of the whole surface (signature)
   std::vector<double> global_geodesic;    ///< kGlobalShapeBins: its geodesic histogram (signature)
+  std::vector<double> global_spectrum;    ///< kGlobalSpectrumLength: its Laplace-Beltrami spectrum (signature)
 };
 
 /// The matchable form of an entry's graph.

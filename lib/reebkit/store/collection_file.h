@@ -23,8 +23,9 @@ namespace reebkit {
 /// strings (names, classes and errors as UTF-8 bytes + offsets, string
 /// attributes fixed-length): HDF5 reads variable-length strings from its
 /// global heap trusting the stored lengths. 5: the pose-invariant
-/// attributes (node_attr 34 columns, signature 64).
-inline constexpr int kCollectionLayoutVersion = 5;
+/// attributes (node_attr 34 columns, signature 64). 6: the Laplace-Beltrami
+/// spectra (node_attr 40 columns, signature 80).
+inline constexpr int kCollectionLayoutVersion = 6;
 
 /// Where the file came from: file attributes, and two groups.
 struct Provenance {

@@ -1,0 +1,65 @@
+// Laplace-Beltrami spectra of the whole surface and of each region of the
+// high-level Reeb graph: intrinsic attributes that carry the proportions of
+// a shape and of its parts, which its graph alone does not (a thin arm and a
+// thick one have the same graph). Tierny et al. 2006, section 5.3: the graphs
+// "can be extended with geometrical attributes"; the spectrum is the
+// Shape-DNA of Reuter, Wolter and Peinecke (CAD 38(4), 2006, mesh/shape_dna.h)
+// taken per region, with the Neumann condition on the level lines that cut
+// the region out (Reuter et al. 2009, "Discrete Laplace-Beltrami operators
+// for shape analysis and segmentation", use the same per-part spectra).
+//
+// Invariances: the Laplace-Beltrami spectrum does not change when the
+// surface bends without stretching (a limb moving), nor under rigid motion;
+// each eigenvalue is multiplied by the area it belongs to (the surface's, or
+// the region's), so scale drops out too. Each is also divided by 4 pi k, its
+// value under Weyl's law (lambda_k area ~ 4 pi k), so that every index counts
+// alike, and squashed into [0, 1) by x / (1 + x), the range the matcher and
+// the signature's nearest-neighbour search expect.
+//
+// Cost: the spectra are computed on a copy of the surface decimated to about
+// SpectraOptions::coarse_vertices vertices (mesh/decimation.h, whose kept
+// vertices carry their region labels): the lowest eigenvalues describe the
+// shape at the scale of its parts, which the coarse copy keeps, and the
+// solver's time grows with the vertex count.
+#pragma once
+
+#include "reebkit/attributes/graph_record.h"
+#include "reebkit/core/mesh.h"
+
+#include <vector>
+
+namespace reebkit {
+
+struct SpectraOptions {
+  /// The surface is decimated to about this many vertices before its spectra
+  /// are computed (a smaller mesh is used as it is). >= 100.
+  Index coarse_vertices = 2000;
+  /// A region with less than this share of the surface's area (counted on
+  /// the surface as given, so that the decision does not move with the
+  /// decimation) gets zeros: too few coarse vertices to resolve its first
+  /// eigenvalues (about coarse_vertices x share). In [0, 1].
+  double min_region_area = 0.01;
+};
+
+struct SurfaceSpectra {
+  /// kGlobalSpectrumLength values s / (1 + s), s = lambda_k x area / (4 pi k),
+  /// k = 1 .. kGlobalSpectrumLength (the zero eigenvalue left out).
+  std::vector<double> global;
+  /// #regions x kRegionSpectrumLength, row-major: the same for each
+  /// region (its own area, its Neumann spectrum); zeros for a region below
+  /// min_region_area, or left with fewer than kRegionSpectrumLength + 2
+  /// vertices on the coarse copy.
+  std::vector<double> region;
+};
+
+/// The spectra of `mesh` (one connected surface) and of its regions:
+/// vertex v belongs to region vertex_region[v] in [0, regions). A triangle
+/// belongs to the region of at least two of its corners (none when all three
+/// differ). Throws InvalidArgument for a vertex_region of another size, a
+/// label out of range or options out of range; InvalidMeshError naming
+/// mesh.source when the whole surface's spectrum cannot be computed (see
+/// shape_dna). A region whose spectrum cannot be computed gets zeros.
+SurfaceSpectra surface_spectra(const Mesh& mesh, const std::vector<Index>& vertex_region, Index regions,
+                               const SpectraOptions& options = {});
+
+}  // namespace reebkit
