@@ -1,5 +1,6 @@
 #include "reebkit/deform/proportions.h"
 
+#include "deform/deform_test_util.h"
 #include "reebkit/core/error.h"
 #include "reebkit/geodesic/dijkstra.h"
 #include "reebkit/mesh/shapes.h"
@@ -14,24 +15,6 @@
 namespace reebkit::test {
 namespace {
 
-StarOptions five_arms() {
-  StarOptions star;
-  star.arms = 5;
-  star.levels = 4;
-  star.twist = 0.3;
-  return star;
-}
-
-const MeshAnalysis& star_analysis() {
-  static const MeshAnalysis a = analyze_mesh(make_star(five_arms()));
-  return a;
-}
-
-/// The leaf region holding feature point `k` (the tip of an arm).
-Index leaf_of_feature(const MeshAnalysis& a, std::size_t k) {
-  return a.reeb.vertex_node[static_cast<std::size_t>(a.features.vertices[k])];
-}
-
 ProportionOptions change(Index node, double scale, double thickness, double falloff = 0.25,
                          ProportionPart part = ProportionPart::Component) {
   ProportionOptions o;
@@ -42,8 +25,6 @@ ProportionOptions change(Index node, double scale, double thickness, double fall
   o.falloff = falloff;
   return o;
 }
-
-Vec3 row(const Mesh& m, Index v) { return m.vertices.row(v).transpose(); }
 
 Vec3 anchor_mean(const Mesh& m, const ProportionPlan& plan) {
   Vec3 sum = Vec3::Zero();

@@ -13,8 +13,6 @@ namespace reebkit {
 
 namespace {
 
-std::string part_name(Index node) { return "plan_proportions: node " + std::to_string(node); }
-
 double smoothstep(double t) { return t * t * (3.0 - 2.0 * t); }
 
 // A region: pivoting on all of it, ramped from its vertices next to another
@@ -69,12 +67,7 @@ void plan_component(const MeshAnalysis& a, Index node, double falloff, Proportio
 ProportionPlan plan_proportions(const MeshAnalysis& reference, const ProportionOptions& options) {
   const ReebGraph& g = reference.reeb;
   const Index nv = reference.mesh.num_vertices();
-  if (g.nodes.empty() || g.vertex_node.size() != static_cast<std::size_t>(nv))
-    throw InvalidArgument("plan_proportions: the analysis of " + reference.mesh.source +
-                          " has no Reeb graph (AnalysisOptions::reeb_graph is false)");
-  if (options.node < 0 || options.node >= g.num_nodes())
-    throw InvalidArgument(part_name(options.node) + " does not exist (the Reeb graph has " +
-                          std::to_string(g.num_nodes()) + " nodes)");
+  check_graph_node(reference, options.node, "plan_proportions");
   if (!(std::isfinite(options.scale) && options.scale > 0.0) ||
       !(std::isfinite(options.thickness) && options.thickness > 0.0))
     throw InvalidArgument("plan_proportions: scale " + std::to_string(options.scale) + " and thickness " +
@@ -92,7 +85,7 @@ ProportionPlan plan_proportions(const MeshAnalysis& reference, const ProportionO
   if (options.part == ProportionPart::Region)
     plan_region(reference, options.node, options.falloff, plan);
   else if (std::none_of(g.edges.begin(), g.edges.end(), [&](const std::array<Index, 2>& e) { return e[1] == options.node; }))
-    throw InvalidArgument(part_name(options.node) + " is a root (the region around the minimum of f_q): it has no " +
+    throw InvalidArgument("plan_proportions: node " + std::to_string(options.node) + " is a root (the region around the minimum of f_q): it has no " +
                           "parent to attach a component to; its region (ProportionPart::Region) can change");
   else
     plan_component(reference, options.node, options.falloff, plan);
