@@ -37,7 +37,7 @@
 # COLLECTIONS (default all four) names the collections to build and
 # evaluate; the others' files are left as they are. REPORT_DIR (default
 # results/pose/): one folder per collection, each with report.md, pr.csv,
-# pr.png, pr.svg. The meshes, class files, collection files and distance
+# pr.png, pr.svg (body-shape also people.txt: each person's changes and poses). The meshes, class files, collection files and distance
 # matrices are derived from academic-use data: they stay in
 # BUILD_DIR/pose_retrieval/NAME/ and are never committed (the remeshed and
 # body-shape meshes in meshes/, the class file NAME.cla). THREADS (default 2)
@@ -174,7 +174,8 @@ for name in $collections; do
       evaluate tosca-remeshed "$work/tosca-remeshed/meshes" "$work/tosca-remeshed/tosca-remeshed.cla" ;;
     body-shape)
       step "$people people made from michael, $poses_per_person poses each, remeshed" body_shape_collection
-      evaluate body-shape "$work/body-shape/meshes" "$work/body-shape/body-shape.cla" ;;
+      evaluate body-shape "$work/body-shape/meshes" "$work/body-shape/body-shape.cla"
+      cp "$work/body-shape/people/people.txt" "$report/body-shape/people.txt" ;;
   esac
   echo "report: $report/$name/report.md"
 done
