@@ -7,13 +7,14 @@
 // limbs, the smallest components of the Reeb graph holding at least 5 % of
 // the surface (michael: both legs, both arms, the head with the top of the
 // chest), and its torso, the largest region in no limb. A person changes 2
-// to 4 different parts, each by a factor drawn uniformly in [1.05, 1.15]: a
+// to 4 different parts, each by a factor drawn uniformly in FACTORS (default
+// [1.05, 1.15]): a
 // limb longer (ProportionOptions::scale s with thickness 1 / s) or thicker
 // (thickness s), the torso thicker; no two people change the same parts the
 // same ways. Each person is shown in POSES poses drawn from all of them.
 //
 //   build/experiments/body_shapes TOSCA_DIR OUT_DIR [--shape michael]
-//       [--people 10] [--poses 10] [--seed 1] [--cla FILE]
+//       [--people 10] [--poses 10] [--factors 1.05:1.15] [--seed 1] [--cla FILE]
 //
 // Writes OUT_DIR/personNN_SHAPEK.ply (binary PLY, the pose's vertices and
 // triangles moved), OUT_DIR/people.txt (each person's changes and poses) and
@@ -26,6 +27,7 @@
 #include "reebkit/mesh/load_mesh.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -45,7 +47,6 @@ namespace fs = std::filesystem;
 using reebkit::Index;
 
 constexpr double kMinLimbShare = 0.05;  // a limb holds at least this share of the surface
-constexpr double kMinFactor = 1.05, kMaxFactor = 1.15;
 constexpr int kMinChanges = 2, kMaxChanges = 4;
 
 struct Part {
@@ -122,11 +123,16 @@ std::vector<fs::path> pose_files(const fs::path& dir, const std::string& shape) 
   return out;
 }
 
+/// Factor range: the interval of the uniform draws.
+struct Factors {
+  double low = 1.05, high = 1.15;
+};
+
 std::vector<Person> draw_people(int people, int poses, std::size_t pose_count, std::size_t part_count,
-                                std::uint64_t seed, const std::vector<Part>& parts) {
+                                Factors factors, std::uint64_t seed, const std::vector<Part>& parts) {
   std::mt19937_64 rng(seed);
   std::uniform_int_distribution<int> changes(kMinChanges, std::min<int>(kMaxChanges, static_cast<int>(part_count)));
-  std::uniform_real_distribution<double> factor(kMinFactor, kMaxFactor);
+  std::uniform_real_distribution<double> factor(factors.low, factors.high);
   std::bernoulli_distribution longer(0.5);
   std::set<std::vector<std::pair<std::size_t, bool>>> seen;
   std::vector<Person> out;
@@ -173,12 +179,14 @@ reebkit::ProportionPlan original_vertices_only(reebkit::ProportionPlan plan, Ind
 reebkit::Mesh load(const fs::path& path) { return std::move(reebkit::load_mesh(path).components.front()); }
 
 int run(const fs::path& tosca, const fs::path& out, const std::string& shape, int people, int poses,
-        std::uint64_t seed, fs::path cla) {
+        Factors factors, std::uint64_t seed, fs::path cla) {
   const std::vector<fs::path> files = pose_files(tosca, shape);
   if (files.empty()) throw reebkit::Error(tosca.string() + ": no " + shape + "<number>.off");
   if (people < 1 || poses < 1 || poses > static_cast<int>(files.size()))
-    throw reebkit::InvalidArgument("body_shapes: --people must be >= 1 and --poses in [1, " +
+    throw reebkit::InvalidArgument("--people must be >= 1 and --poses in [1, " +
                                    std::to_string(files.size()) + "]");
+  if (!(factors.low > 0.0 && factors.low <= factors.high && std::isfinite(factors.high)))
+    throw reebkit::InvalidArgument("--factors LOW:HIGH needs 0 < LOW <= HIGH");
   fs::create_directories(out);
   if (cla.empty()) cla = out / "body-shape.cla";
   reebkit::Timer timer;
@@ -186,7 +194,7 @@ int run(const fs::path& tosca, const fs::path& out, const std::string& shape, in
   const std::vector<Part> parts = body_parts(reference.reeb);
   if (parts.size() < static_cast<std::size_t>(kMinChanges))
     throw reebkit::Error(files.front().string() + ": fewer than " + std::to_string(kMinChanges) + " body parts");
-  std::vector<Person> persons = draw_people(people, poses, files.size(), parts.size(), seed, parts);
+  std::vector<Person> persons = draw_people(people, poses, files.size(), parts.size(), factors, seed, parts);
   std::cerr << "body_shapes: " << files.front().string() << " analysed, " << parts.size() << " parts, "
             << timer.lap() / 1000.0 << " s\n";
 
@@ -217,7 +225,8 @@ int run(const fs::path& tosca, const fs::path& out, const std::string& shape, in
   }
 
   std::ofstream text(out / "people.txt");
-  text << "# body_shapes " << tosca.string() << " (" << shape << ", seed " << seed << "): parts planned on "
+  text << "# body_shapes " << tosca.string() << " (" << shape << ", factors " << factors.low << ":" << factors.high
+       << ", seed " << seed << "): parts planned on "
        << files.front().filename().string() << "\n";
   for (std::size_t i = 0; i < parts.size(); ++i) {
     const reebkit::ReebNode& node = reference.reeb.nodes[static_cast<std::size_t>(parts[i].node)];
@@ -251,20 +260,26 @@ int run(const fs::path& tosca, const fs::path& out, const std::string& shape, in
 int main(int argc, char** argv) {
   const std::vector<std::string> args(argv + 1, argv + argc);
   const auto usage = [] {
-    std::cerr << "usage: body_shapes TOSCA_DIR OUT_DIR [--shape michael] [--people 10] [--poses 10] [--seed 1] "
-                 "[--cla FILE]\n";
+    std::cerr << "usage: body_shapes TOSCA_DIR OUT_DIR [--shape michael] [--people 10] [--poses 10] "
+                 "[--factors 1.05:1.15] [--seed 1] [--cla FILE]\n";
     return 2;
   };
   if (args.size() < 2 || args.size() % 2 != 0) return usage();
   std::map<std::string, std::string> options{{"--shape", "michael"}, {"--people", "10"}, {"--poses", "10"},
-                                             {"--seed", "1"}, {"--cla", ""}};
+                                             {"--factors", "1.05:1.15"}, {"--seed", "1"}, {"--cla", ""}};
   for (std::size_t i = 2; i < args.size(); i += 2) {
     if (!options.count(args[i])) return usage();
     options[args[i]] = args[i + 1];
   }
   try {
+    Factors factors;
+    const std::string& range = options["--factors"];
+    const std::size_t colon = range.find(':');
+    if (colon == std::string::npos) return usage();
+    factors.low = std::stod(range.substr(0, colon));
+    factors.high = std::stod(range.substr(colon + 1));
     return run(args[0], args[1], options["--shape"], std::stoi(options["--people"]), std::stoi(options["--poses"]),
-               std::stoull(options["--seed"]), options["--cla"]);
+               factors, std::stoull(options["--seed"]), options["--cla"]);
   } catch (const std::exception& e) {
     std::cerr << "body_shapes: " << e.what() << "\n";
     return 1;

@@ -20,10 +20,11 @@
 #    a triangulation (within a TOSCA class they all share one);
 #  - body-shape: synthetic people made from TOSCA's michael by
 #    experiments/body_shapes (deform/proportions.h): PEOPLE (default 10)
-#    people, each with 2-4 of michael's parts (arms, legs, head, torso) 5-15 %
-#    longer or thicker, each person in POSES_PER_PERSON (default 10) of the
-#    20 michael poses, drawn per person; class = person. Every mesh is then
-#    remeshed on its own like tosca-remeshed.
+#    people, each with 2-4 of michael's parts (arms, legs, head with the top
+#    of the chest, torso) longer or thicker by factors drawn in FACTORS
+#    (default 1.05:1.15, i.e. 5-15 %), each person in POSES_PER_PERSON
+#    (default 10) of the 20 michael poses, drawn per person; class = person.
+#    Every mesh is then remeshed on its own like tosca-remeshed.
 # Remeshing: N is drawn uniformly in [REMESH_MIN, REMESH_MAX] (default 8000,
 # 15000: the range of an independent collection of scanned bodies) and S is
 # the CRC (cksum) of the mesh name, N = REMESH_MIN + S mod the range width:
@@ -53,6 +54,7 @@ remesh_min=${REMESH_MIN:-8000}
 remesh_max=${REMESH_MAX:-15000}
 people=${PEOPLE:-10}
 poses_per_person=${POSES_PER_PERSON:-10}
+factors=${FACTORS:-1.05:1.15}
 tosca=$build/data/tosca_dev
 shrec=$build/data/shrec07_watertight
 shrec_cla=$shrec/shrec07_watertight.cla
@@ -144,7 +146,7 @@ remesh_each() {
 # people.txt saying what each person's proportions are), remeshed.
 body_shape_collection() {
   local dir=$work/body-shape
-  "$body_shapes" "$tosca" "$dir/people" --people "$people" --poses "$poses_per_person" \
+  "$body_shapes" "$tosca" "$dir/people" --people "$people" --poses "$poses_per_person" --factors "$factors" \
     --cla "$dir/body-shape.cla"
   remesh_each "$dir" "$dir"/people/*.ply
   rm "$dir"/people/*.ply
