@@ -42,7 +42,11 @@
 # matrices are derived from academic-use data: they stay in
 # BUILD_DIR/pose_retrieval/NAME/ and are never committed (the remeshed and
 # body-shape meshes in meshes/, the class file NAME.cla). THREADS (default 2)
-# sets the threads of every step.
+# sets the threads of every step. REUSE=1 keeps the meshes, class file and
+# baseline matrices of each collection whose last run completed and redoes
+# only reebkit's index, distances and report (about 25 s a collection): for
+# re-runs while reebkit's settings change (the generation settings POSES,
+# PEOPLE, POSES_PER_PERSON, FACTORS, REMESH_* then have no effect).
 set -euo pipefail
 # shellcheck source=experiments/common.sh
 source "$(dirname "$0")/common.sh"
@@ -73,9 +77,15 @@ for name in $collections; do
 done
 require_built "$reeb" "$baselines"
 require_unpacked "$tosca/cat0.off" "$shrec_cla"
+# A collection is reused (REUSE=1) when its last run completed.
+reused() { [ "${REUSE:-0}" = 1 ] && [ -e "$work/$1/complete" ]; }
 for name in $collections; do
-  rm -rf "${work:?}/$name"
-  mkdir -p "$work/$name"
+  if reused "$name"; then
+    rm -f "$work/$name/$name.h5" "$work/$name/reebkit.matrix"
+  else
+    rm -rf "${work:?}/$name"
+    mkdir -p "$work/$name"
+  fi
 done
 mkdir -p "$report"
 
@@ -152,30 +162,41 @@ body_shape_collection() {
   rm "$dir"/people/*.ply
 }
 
-# evaluate NAME MESH_DIR CLA: index, all-pairs distances, baselines, report.
+# evaluate NAME MESH_DIR CLA: index, all-pairs distances, baselines (kept
+# when reused), report; then marks the collection complete.
 evaluate() {
-  local name=$1 meshes=$2 cla=$3 out=$work/$1
-  all_distances "$name" "$meshes" "$cla" "$out"
+  local name=$1 meshes=$2 cla=$3 out=$work/$1 keep=0
+  if reused "$name"; then keep=1; fi
+  all_distances "$name" "$meshes" "$cla" "$out" "$keep"
   step "$name: evaluation report" \
     "$reeb" eval "$out/reebkit.matrix" --name reebkit --cla "$cla" -o "$report/$name" \
       --compare "$out/baseline-shape-dna.matrix:Shape-DNA" "$out/baseline-geodesic.matrix:geodesic-histogram" \
         "$out/baseline-d2.matrix:D2"
+  touch "$out/complete"
 }
 
 for name in $collections; do
+  if reused "$name"; then
+    echo "== $name: meshes, class file and baselines kept from the last run (REUSE=1)"
+  else
+    case $name in
+      shrec07-pose) step "SHREC07 articulated classes in $poses poses each" shrec07_pose_collection ;;
+      tosca-remeshed)
+        tosca_classes_file "$work/tosca-remeshed/tosca-remeshed.cla"
+        step "TOSCA, every pose remeshed" remesh_each "$work/tosca-remeshed" "$tosca"/*.off ;;
+      body-shape)
+        step "$people people made from michael, $poses_per_person poses each, remeshed" body_shape_collection ;;
+    esac
+  fi
   case $name in
     tosca)
       step "TOSCA class file" tosca_classes_file "$work/tosca/tosca.cla"
       evaluate tosca "$tosca" "$work/tosca/tosca.cla" ;;
     shrec07-pose)
-      step "SHREC07 articulated classes in $poses poses each" shrec07_pose_collection
       evaluate shrec07-pose "$work/shrec07-pose/meshes" "$work/shrec07-pose/shrec07-pose.cla" ;;
     tosca-remeshed)
-      tosca_classes_file "$work/tosca-remeshed/tosca-remeshed.cla"
-      step "TOSCA, every pose remeshed" remesh_each "$work/tosca-remeshed" "$tosca"/*.off
       evaluate tosca-remeshed "$work/tosca-remeshed/meshes" "$work/tosca-remeshed/tosca-remeshed.cla" ;;
     body-shape)
-      step "$people people made from michael, $poses_per_person poses each, remeshed" body_shape_collection
       evaluate body-shape "$work/body-shape/meshes" "$work/body-shape/body-shape.cla"
       cp "$work/body-shape/people/people.txt" "$report/body-shape/people.txt" ;;
   esac
