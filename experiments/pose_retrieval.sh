@@ -47,6 +47,9 @@
 # only reebkit's index, distances and report (about 25 s a collection): for
 # re-runs while reebkit's settings change (the generation settings POSES,
 # PEOPLE, POSES_PER_PERSON, FACTORS, REMESH_* then have no effect).
+# Time on 2 threads of a shared machine: tosca-remeshed about 5 min (86 s
+# remeshing), body-shape about 10 min (3 min making and remeshing the
+# people), the Shape-DNA baseline most of the rest (docs/results.md).
 set -euo pipefail
 # shellcheck source=experiments/common.sh
 source "$(dirname "$0")/common.sh"
