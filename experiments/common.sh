@@ -47,17 +47,22 @@ step() {
   echo "== $name: $((SECONDS - start)) s"
 }
 
-# all_distances NAME MESH_DIR CLA OUT: indexes MESH_DIR (classes CLA) into
-# OUT/NAME.h5 and writes the all-pairs distances, rows in CLA order, of
+# all_distances NAME MESH_DIR CLA OUT [KEEP]: indexes MESH_DIR (classes CLA)
+# into OUT/NAME.h5 and writes the all-pairs distances, rows in CLA order, of
 # reebkit's graph matching (OUT/reebkit.matrix) and of the baselines
-# (OUT/baseline-d2.matrix, -geodesic, -shape-dna). Uses $reeb, $baselines
-# and $threads.
+# (OUT/baseline-d2.matrix, -geodesic, -shape-dna; KEEP = 1 keeps those
+# already there). Uses $reeb, $baselines and $threads.
 all_distances() {
-  local name=$1 meshes=$2 cla=$3 out=$4
+  local name=$1 meshes=$2 cla=$3 out=$4 keep=${5:-0}
   step "$name: index into attributed Reeb graphs" \
     "$reeb" index "$meshes" -o "$out/$name.h5" --classes "$cla" --threads "$threads"
   step "$name: reebkit all-pairs graph matching distances" \
     "$reeb" distances "$out/$name.h5" -o "$out/reebkit.matrix" --cla "$cla" --threads "$threads"
-  step "$name: baselines: D2, geodesic histogram and Shape-DNA distances" \
-    env OMP_NUM_THREADS="$threads" "$baselines" "$meshes" "$cla" "$out/baseline"
+  if [ "$keep" = 1 ] && [ -e "$out/baseline-d2.matrix" ] && [ -e "$out/baseline-geodesic.matrix" ] &&
+    [ -e "$out/baseline-shape-dna.matrix" ]; then
+    echo "== $name: baselines kept from the last run"
+  else
+    step "$name: baselines: D2, geodesic histogram and Shape-DNA distances" \
+      env OMP_NUM_THREADS="$threads" "$baselines" "$meshes" "$cla" "$out/baseline"
+  fi
 }

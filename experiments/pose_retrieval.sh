@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Retrieval under pose (issue 12): two collections of articulated shapes in
-# several poses, each evaluated by `reeb eval` with reebkit's attributed Reeb
-# graph matching next to three baselines (experiments/baselines: D2, a
+# Retrieval under pose (issues 12 and 21): collections of articulated shapes
+# in several poses, each evaluated by `reeb eval` with reebkit's attributed
+# Reeb graph matching next to three baselines (experiments/baselines: D2, a
 # geodesic distance histogram, Shape-DNA):
 #  - tosca: the 54 TOSCA meshes of ../shared/datasets/tosca_dev (cat 11,
 #    centaur 6, dog 9, horse 8, michael 20; the class is the file name
@@ -14,33 +14,83 @@
 #    20 x POSES, the original classes. With one pose every query's class
 #    holds other shapes only; with two the other pose of the same mesh is
 #    every query's nearest neighbour for reebkit and Shape-DNA alike (NN
-#    1.000), which NN then does not measure.
+#    1.000), which NN then does not measure;
+#  - tosca-remeshed: the 54 TOSCA meshes and classes, every pose remeshed on
+#    its own (`reeb perturb --remesh N --seed S`), so that no two poses share
+#    a triangulation (within a TOSCA class they all share one);
+#  - body-shape: synthetic people made from TOSCA's michael by
+#    experiments/body_shapes (deform/proportions.h): PEOPLE (default 10)
+#    people, each with 2-4 of michael's parts (arms, legs, head with the top
+#    of the chest, torso) longer or thicker by factors drawn in FACTORS
+#    (default 1.05:1.15, i.e. 5-15 %), each person in POSES_PER_PERSON
+#    (default 10) of the 20 michael poses, drawn per person; class = person.
+#    Every mesh is then remeshed on its own like tosca-remeshed.
+# Remeshing: N is drawn uniformly in [REMESH_MIN, REMESH_MAX] (default 8000,
+# 15000: the range of an independent collection of scanned bodies) and S is
+# the CRC (cksum) of the mesh name, N = REMESH_MIN + S mod the range width:
+# the same names give the same meshes on every run.
 #
 #   experiments/pose_retrieval.sh BUILD_DIR [REPORT_DIR]
+#   COLLECTIONS="tosca-remeshed body-shape" experiments/pose_retrieval.sh build
 #
-# BUILD_DIR: a build with the targets reeb and baselines, and the datasets
-# unpacked (ctest -R unpack_datasets). REPORT_DIR (default results/pose/):
-# tosca/ and shrec07-pose/, each with report.md, pr.csv, pr.png, pr.svg. The
-# posed meshes, class files, collection files and distance matrices are
-# derived from academic-use data: they stay in BUILD_DIR/pose_retrieval/ and
-# are never committed. THREADS (default 2) sets the threads of every step.
+# BUILD_DIR: a build with the targets reeb and baselines (and body_shapes for
+# body-shape), and the datasets unpacked (ctest -R unpack_datasets).
+# COLLECTIONS (default all four) names the collections to build and
+# evaluate; the others' files are left as they are. REPORT_DIR (default
+# results/pose/): one folder per collection, each with report.md, pr.csv,
+# pr.png, pr.svg (body-shape also people.txt: each person's changes and poses). The meshes, class files, collection files and distance
+# matrices are derived from academic-use data: they stay in
+# BUILD_DIR/pose_retrieval/NAME/ and are never committed (the remeshed and
+# body-shape meshes in meshes/, the class file NAME.cla). THREADS (default 2)
+# sets the threads of every step. REUSE=1 keeps the meshes, class file and
+# baseline matrices of each collection whose last run completed and redoes
+# only reebkit's index, distances and report (about 25 s a collection): for
+# re-runs while reebkit's settings change (the generation settings POSES,
+# PEOPLE, POSES_PER_PERSON, FACTORS, REMESH_* then have no effect).
+# Time on 2 threads of a shared machine: tosca-remeshed about 5 min (86 s
+# remeshing), body-shape about 10 min (3 min making and remeshing the
+# people), the Shape-DNA baseline most of the rest (docs/results.md).
 set -euo pipefail
 # shellcheck source=experiments/common.sh
 source "$(dirname "$0")/common.sh"
 
 experiment_arguments results/pose "$@"
 poses=${POSES:-1}
+collections=${COLLECTIONS:-tosca shrec07-pose tosca-remeshed body-shape}
+remesh_min=${REMESH_MIN:-8000}
+remesh_max=${REMESH_MAX:-15000}
+people=${PEOPLE:-10}
+poses_per_person=${POSES_PER_PERSON:-10}
+factors=${FACTORS:-1.05:1.15}
 tosca=$build/data/tosca_dev
 shrec=$build/data/shrec07_watertight
 shrec_cla=$shrec/shrec07_watertight.cla
 work=$build/pose_retrieval
+body_shapes=$build/experiments/body_shapes
 articulated="Human Ant Octopus Teddy Hand Armadillo Fourleg"
 tosca_classes="cat centaur dog horse michael"
 
+for name in $collections; do
+  case $name in
+    tosca | shrec07-pose | tosca-remeshed) ;;
+    body-shape) require_built "$body_shapes" ;;
+    *) echo "$0: unknown collection '$name' in COLLECTIONS (tosca, shrec07-pose, tosca-remeshed, body-shape)" >&2
+       exit 2 ;;
+  esac
+done
 require_built "$reeb" "$baselines"
 require_unpacked "$tosca/cat0.off" "$shrec_cla"
-rm -rf "$work"
-mkdir -p "$work/tosca" "$work/shrec07-pose/meshes" "$work/shrec07-pose/correspondence" "$report"
+# A collection is reused (REUSE=1) when its last run completed.
+reused() { [ "${REUSE:-0}" = 1 ] && [ -e "$work/$1/complete" ]; }
+for name in $collections; do
+  if reused "$name"; then
+    rm -f "$work/$name/$name.h5" "$work/$name/reebkit.matrix"
+  else
+    rm -rf "${work:?}/$name"
+    mkdir -p "$work/$name"
+  fi
+done
+mkdir -p "$report"
 
 # tosca_classes_file OUT: the PSB class file of the TOSCA meshes, a class per
 # file name prefix (dog.off and dog0.off .. dog7.off are "dog").
@@ -63,6 +113,7 @@ shrec07_models() {
 # shrec07_pose_collection: the posed meshes and their class file.
 shrec07_pose_collection() {
   local dir=$work/shrec07-pose class id k total=0 blocks="" names
+  mkdir -p "$dir/meshes" "$dir/correspondence"
   for class in $articulated; do
     names=""
     for id in $(shrec07_models "$class"); do
@@ -83,18 +134,74 @@ shrec07_pose_collection() {
   echo "$total posed meshes in $dir/meshes"
 }
 
-# evaluate NAME MESH_DIR CLA: index, all-pairs distances, baselines, report.
+# remesh_each DIR SOURCE...: every SOURCE mesh remeshed on its own into
+# DIR/meshes/NAME.off (NAME: the file name without its extension) by reeb
+# perturb --remesh N --seed S, S = cksum of NAME, N = REMESH_MIN + S mod
+# (REMESH_MAX - REMESH_MIN + 1); the draws go to DIR/remesh.txt (source,
+# name, N, S) and the correspondences to DIR/correspondence/.
+remesh_each() {
+  local dir=$1 source name crc
+  shift
+  mkdir -p "$dir/meshes" "$dir/correspondence"
+  for source; do
+    name=$(basename "${source%.*}")
+    crc=$(printf '%s' "$name" | cksum | cut -d ' ' -f 1)
+    echo "$source $name $((remesh_min + crc % (remesh_max - remesh_min + 1))) $crc"
+  done > "$dir/remesh.txt"
+  # shellcheck disable=SC2016
+  xargs -P "$threads" -L 1 bash -c \
+    '"$0" perturb "$2" -o "$1/meshes/$3.off" --remesh "$4" --seed "$5" --correspondence "$1/correspondence/$3.corr" > /dev/null' \
+    "$reeb" "$dir" < "$dir/remesh.txt"
+  echo "$# meshes remeshed to $remesh_min-$remesh_max vertices in $dir/meshes"
+}
+
+# body_shape_collection: the people (full resolution, in people/, with
+# people.txt saying what each person's proportions are), remeshed.
+body_shape_collection() {
+  local dir=$work/body-shape
+  "$body_shapes" "$tosca" "$dir/people" --people "$people" --poses "$poses_per_person" --factors "$factors" \
+    --cla "$dir/body-shape.cla"
+  remesh_each "$dir" "$dir"/people/*.ply
+  rm "$dir"/people/*.ply
+}
+
+# evaluate NAME MESH_DIR CLA: index, all-pairs distances, baselines (kept
+# when reused), report; then marks the collection complete.
 evaluate() {
-  local name=$1 meshes=$2 cla=$3 out=$work/$1
-  all_distances "$name" "$meshes" "$cla" "$out"
+  local name=$1 meshes=$2 cla=$3 out=$work/$1 keep=0
+  if reused "$name"; then keep=1; fi
+  all_distances "$name" "$meshes" "$cla" "$out" "$keep"
   step "$name: evaluation report" \
     "$reeb" eval "$out/reebkit.matrix" --name reebkit --cla "$cla" -o "$report/$name" \
       --compare "$out/baseline-shape-dna.matrix:Shape-DNA" "$out/baseline-geodesic.matrix:geodesic-histogram" \
         "$out/baseline-d2.matrix:D2"
+  touch "$out/complete"
 }
 
-step "TOSCA class file" tosca_classes_file "$work/tosca/tosca.cla"
-evaluate tosca "$tosca" "$work/tosca/tosca.cla"
-step "SHREC07 articulated classes in $poses poses each" shrec07_pose_collection
-evaluate shrec07-pose "$work/shrec07-pose/meshes" "$work/shrec07-pose/shrec07-pose.cla"
-echo "reports: $report/tosca/report.md, $report/shrec07-pose/report.md"
+for name in $collections; do
+  if reused "$name"; then
+    echo "== $name: meshes, class file and baselines kept from the last run (REUSE=1)"
+  else
+    case $name in
+      shrec07-pose) step "SHREC07 articulated classes in $poses poses each" shrec07_pose_collection ;;
+      tosca-remeshed)
+        tosca_classes_file "$work/tosca-remeshed/tosca-remeshed.cla"
+        step "TOSCA, every pose remeshed" remesh_each "$work/tosca-remeshed" "$tosca"/*.off ;;
+      body-shape)
+        step "$people people made from michael, $poses_per_person poses each, remeshed" body_shape_collection ;;
+    esac
+  fi
+  case $name in
+    tosca)
+      step "TOSCA class file" tosca_classes_file "$work/tosca/tosca.cla"
+      evaluate tosca "$tosca" "$work/tosca/tosca.cla" ;;
+    shrec07-pose)
+      evaluate shrec07-pose "$work/shrec07-pose/meshes" "$work/shrec07-pose/shrec07-pose.cla" ;;
+    tosca-remeshed)
+      evaluate tosca-remeshed "$work/tosca-remeshed/meshes" "$work/tosca-remeshed/tosca-remeshed.cla" ;;
+    body-shape)
+      evaluate body-shape "$work/body-shape/meshes" "$work/body-shape/body-shape.cla"
+      cp "$work/body-shape/people/people.txt" "$report/body-shape/people.txt" ;;
+  esac
+  echo "report: $report/$name/report.md"
+done

@@ -1,5 +1,6 @@
 #include "reebkit/deform/deformation.h"
 
+#include "deform/deform_test_util.h"
 #include "reeb/reeb_test_util.h"
 #include "reebkit/core/error.h"
 #include "reebkit/mesh/shapes.h"
@@ -16,24 +17,6 @@ namespace {
 
 constexpr double kDegree = static_cast<double>(EIGEN_PI) / 180.0;
 
-StarOptions five_arms() {
-  StarOptions star;
-  star.arms = 5;
-  star.levels = 4;
-  star.twist = 0.3;
-  return star;
-}
-
-const MeshAnalysis& star_analysis() {
-  static const MeshAnalysis a = analyze_mesh(make_star(five_arms()));
-  return a;
-}
-
-/// The leaf region holding feature point `k` (the tip of an arm).
-Index leaf_of_feature(const MeshAnalysis& a, std::size_t k) {
-  return a.reeb.vertex_node[static_cast<std::size_t>(a.features.vertices[k])];
-}
-
 DeformOptions turn(Index node, double degrees) {
   DeformOptions o;
   o.node = node;
@@ -47,8 +30,6 @@ double turned_angle(const Vec3& before, const Vec3& after, const Vec3& pivot, co
   const Vec3 a = before - pivot, b = after - pivot;
   return std::atan2(axis.dot(a.cross(b)), a.dot(b) - axis.dot(a) * axis.dot(b));
 }
-
-Vec3 row(const Mesh& m, Index v) { return m.vertices.row(v).transpose(); }
 
 /// Every node of the graph except the roots.
 std::vector<Index> non_roots(const ReebGraph& g) {

@@ -60,15 +60,20 @@ double smoothstep(double t) { return t * t * (3.0 - 2.0 * t); }
 
 }  // namespace
 
+void check_graph_node(const MeshAnalysis& analysis, Index node, const std::string& who) {
+  const ReebGraph& g = analysis.reeb;
+  if (g.nodes.empty() || g.vertex_node.size() != static_cast<std::size_t>(analysis.mesh.num_vertices()))
+    throw InvalidArgument(who + ": the analysis of " + analysis.mesh.source +
+                          " has no Reeb graph (AnalysisOptions::reeb_graph is false)");
+  if (node < 0 || node >= g.num_nodes())
+    throw InvalidArgument(who + ": node " + std::to_string(node) + " does not exist (the Reeb graph has " +
+                          std::to_string(g.num_nodes()) + " nodes)");
+}
+
 Deformation plan_deformation(const MeshAnalysis& analysis, const DeformOptions& options) {
   const ReebGraph& g = analysis.reeb;
   const Index nv = analysis.mesh.num_vertices();
-  if (g.nodes.empty() || g.vertex_node.size() != static_cast<std::size_t>(nv))
-    throw InvalidArgument("deform_component: the analysis of " + analysis.mesh.source +
-                          " has no Reeb graph (AnalysisOptions::reeb_graph is false)");
-  if (options.node < 0 || options.node >= g.num_nodes())
-    throw InvalidArgument(node_name(options.node) + " does not exist (the Reeb graph has " +
-                          std::to_string(g.num_nodes()) + " nodes)");
+  check_graph_node(analysis, options.node, "deform_component");
   if (!(options.falloff >= 0.0 && options.falloff <= 1.0))
     throw InvalidArgument("deform_component: falloff " + std::to_string(options.falloff) + " is outside [0, 1]");
   if (!std::isfinite(options.angle_degrees) || !options.axis.allFinite())

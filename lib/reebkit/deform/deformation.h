@@ -9,6 +9,7 @@
 
 #include "reebkit/pipeline/analyze_mesh.h"
 
+#include <string>
 #include <vector>
 
 namespace reebkit {
@@ -70,6 +71,11 @@ struct Deformation {
   /// connected without a crack, 1 inside.
   std::vector<double> weight;
 };
+
+/// Throws InvalidArgument, its message starting with `who`, unless
+/// `analysis` has its Reeb graph and `node` is one of its nodes: what every
+/// plan of a change of a node's part checks first.
+void check_graph_node(const MeshAnalysis& analysis, Index node, const std::string& who);
 
 /// Plans the rotation of options.node's component.
 /// \pre analysis has its Reeb graph; throws InvalidArgument for a missing
