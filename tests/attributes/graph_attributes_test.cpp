@@ -2,6 +2,9 @@
 
 #include "reebkit/core/error.h"
 #include "reebkit/deform/deformation.h"
+#include "reebkit/deform/proportions.h"
+#include "reebkit/matching/graph_matching.h"
+#include "reebkit/pipeline/mesh_record.h"
 #include "reebkit/mesh/load_mesh.h"
 #include "reebkit/mesh/shapes.h"
 #include "reebkit/mesh/transform.h"
@@ -567,6 +570,50 @@ TEST(GraphAttributes, RequiresTheReebGraph) {
   AnalysisOptions options;
   options.reeb_graph = false;
   EXPECT_THROW(compute_attributes(analyze_mesh(make_icosphere(2), options)), InvalidArgument);
+}
+
+// The spectra see a limb's proportions, not its pose: turning an arm of the
+// star by 60 degrees (deform_component) moves the arm's region spectrum by
+// less than a third, and the whole surface's by less than half, of what
+// making the arm 10 % longer does (plan_proportions: scale 1.1, thickness
+// 1 / 1.1, so no thicker; the bend is not quite an isometry: its ramp
+// stretches the joint), and the matcher with its default cost puts the bent
+// star nearer the star than the lengthened one.
+TEST(GraphAttributes, SpectraIgnoreABendAndSeeALongerArm) {
+  const MeshAnalysis& a = cases()[0].analysis;
+  const Index tip = a.features.vertices.front();
+  DeformOptions turn;
+  turn.node = leaf_of_feature(a, 0);
+  turn.angle_degrees = 60.0;
+  const MeshAnalysis bent = analyze_mesh(deform_component(a, turn));
+  ProportionOptions grow;
+  grow.node = turn.node;
+  grow.scale = 1.1;
+  grow.thickness = 1.0 / 1.1;
+  const MeshAnalysis longer = analyze_mesh(apply_proportions(a.mesh, plan_proportions(a, grow)));
+  // The spectrum of the region at the arm's tip (the vertices keep their
+  // numbers), then the whole surface's.
+  const auto spectra = [tip](const MeshAnalysis& m) {
+    const GraphAttributes g = compute_attributes(m);
+    const auto row = g.node.begin() + m.reeb.vertex_node[static_cast<std::size_t>(tip)] * kNodeAttributeCount;
+    return std::pair{std::vector<double>(row + kNodeSpectrum, row + kNodeSpectrum + kRegionSpectrumLength),
+                     std::vector<double>(g.signature.begin() + kSigGlobalSpectrum, g.signature.end())};
+  };
+  const auto [arm, whole] = spectra(a);
+  const auto [bent_arm, bent_whole] = spectra(bent);
+  const auto [longer_arm, longer_whole] = spectra(longer);
+  std::cout << "largest change of the arm's spectrum: " << max_difference(bent_arm, arm) << " bent, "
+            << max_difference(longer_arm, arm) << " 10 % longer; of the whole surface's: "
+            << max_difference(bent_whole, whole) << " bent, " << max_difference(longer_whole, whole) << " longer\n";
+  EXPECT_GT(max_difference(longer_arm, arm), 0.01);
+  EXPECT_LT(3 * max_difference(bent_arm, arm), max_difference(longer_arm, arm));
+  EXPECT_LT(2 * max_difference(bent_whole, whole), max_difference(longer_whole, whole));
+
+  const GraphRecord star = make_graph_record(a, compute_attributes(a));
+  const double to_bent = match_graphs(star, make_graph_record(bent, compute_attributes(bent))).distance;
+  const double to_longer = match_graphs(star, make_graph_record(longer, compute_attributes(longer))).distance;
+  std::cout << "default matching distance to the star: " << to_bent << " bent, " << to_longer << " longer\n";
+  EXPECT_LT(to_bent, to_longer);
 }
 
 }  // namespace

@@ -103,6 +103,7 @@ SurfaceSpectra surface_spectra(const Mesh& mesh, const std::vector<Index>& verte
   out.global.assign(at(kGlobalSpectrumLength), 0.0);
   ShapeDnaOptions global;
   global.eigenvalues = kGlobalSpectrumLength;
+  global.margin = 4;
   try {
     squash(shape_dna(coarse, global), kGlobalSpectrumLength, out.global.data());
   } catch (const InvalidMeshError&) {
@@ -117,6 +118,7 @@ SurfaceSpectra surface_spectra(const Mesh& mesh, const std::vector<Index>& verte
   std::vector<Index> renumber(at(mesh.num_vertices()), kInvalidIndex);
   ShapeDnaOptions local;
   local.eigenvalues = n;
+  local.margin = 2;  // a part of a shape has no symmetry to make its eigenvalues multiple
   for (Index r = 0; r < regions; ++r) {
     if (!(region_area[at(r)] >= options.min_region_area * total_area) || region_area[at(r)] == 0.0) continue;
     // Cut from the surface as given, then coarsened at the same ratio: a

@@ -33,7 +33,7 @@ namespace reebkit {
 struct SpectraOptions {
   /// The surface is decimated to about this many vertices before its spectra
   /// are computed (a smaller mesh is used as it is). >= 100.
-  Index coarse_vertices = 2000;
+  Index coarse_vertices = 1500;
   /// A region with less than this share of the surface's area (counted on
   /// the surface as given, so that the decision does not move with the
   /// decimation) gets zeros: too few coarse vertices to resolve its first

@@ -81,8 +81,8 @@ ShapeDna shape_dna(const Mesh& mesh, const ShapeDnaOptions& options) {
   // Lanczos finds the copies of a multiple eigenvalue one after another, so
   // a multiple eigenvalue at the end of the range may come out with too few
   // copies: a few more eigenvalues than kept make the kept range whole.
-  const Eigen::Index computed = std::min<Eigen::Index>(wanted + std::max(10, options.eigenvalues / 5),
-                                                       mesh.num_vertices() - 1);
+  const int margin = options.margin >= 0 ? options.margin : std::max(10, options.eigenvalues / 5);
+  const Eigen::Index computed = std::min<Eigen::Index>(wanted + margin, mesh.num_vertices() - 1);
   const Eigen::Index subspace = std::min<Eigen::Index>(mesh.num_vertices(), std::max<Eigen::Index>(2 * computed + 1, 20));
   ShiftedSolve op(operators.stiffness, operators.mass, source);
   MassProduct mass_op(operators.mass);

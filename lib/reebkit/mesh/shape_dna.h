@@ -35,6 +35,11 @@ struct ShapeDnaOptions {
   double shift = -0.01;
   /// Relative tolerance of the Lanczos iterations (Spectra's default).
   double tolerance = 1e-10;
+  /// Eigenvalues computed beyond the last one kept, so that a multiple
+  /// eigenvalue at the end of the range comes out whole (Lanczos finds its
+  /// copies one after another); -1: max(10, eigenvalues / 5). Fewer are
+  /// cheaper where multiplicities are not expected (parts of a shape).
+  int margin = -1;
 };
 
 struct ShapeDna {
