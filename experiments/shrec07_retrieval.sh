@@ -14,7 +14,9 @@
 # BUILD_DIR/shrec07_retrieval/ and are never committed. THREADS (default 2)
 # sets the threads of every step. Every method is also evaluated after local
 # scaling with its SCALING_K-th (default 10) nearest model (reeb eval
-# --local-scaling).
+# --local-scaling). REUSE=1 keeps the baseline matrices of the last run and
+# redoes only reebkit's index, distances and report (for re-runs while
+# reebkit's settings change).
 set -euo pipefail
 # shellcheck source=experiments/common.sh
 source "$(dirname "$0")/common.sh"
@@ -29,7 +31,7 @@ require_built "$reeb" "$baselines"
 require_unpacked "$cla"
 mkdir -p "$work" "$report"
 
-all_distances shrec07 "$data" "$cla" "$work"
+all_distances shrec07 "$data" "$cla" "$work" "${REUSE:-0}"
 step "evaluation report" \
   "$reeb" eval "$work/reebkit.matrix" --name reebkit --cla "$cla" -o "$report" \
     --compare "$work/baseline-d2.matrix:D2" "$work/baseline-geodesic.matrix:geodesic-histogram" \
