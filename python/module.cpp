@@ -4,6 +4,7 @@
 
 #include "reebkit/core/error.h"
 #include "reebkit/core/option_value.h"
+#include "reebkit/core/version.h"
 #include "reebkit/pipeline/analysis_options.h"
 
 #include <algorithm>

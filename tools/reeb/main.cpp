@@ -1,6 +1,7 @@
 // reeb: invariant high-level Reeb graphs of 3D meshes, from the command line.
 #include "reeb/cli.h"
 #include "reebkit/core/error.h"
+#include "reebkit/core/version.h"
 
 #include <cerrno>
 #include <cstdio>

@@ -7,6 +7,7 @@
 
 #include "reebkit/attributes/graph_record.h"
 #include "reebkit/core/option_value.h"
+#include "reebkit/core/version.h"
 #include "reebkit/io/psb_classes.h"
 
 #include <cstdint>
