@@ -17,11 +17,13 @@ class BatchFailures {
  public:
   explicit BatchFailures(std::string tool) : tool_(std::move(tool)) {}
 
-  /// Reports that a mesh failed, `why` naming it (safe from several threads).
-  void add(const std::string& why) {
+  /// Reports that `mesh` failed and why (safe from several threads); the
+  /// mesh is named first unless `why` names it already.
+  void add(const std::string& why, const std::string& mesh = "") {
+    const std::string line = mesh.empty() || why.find(mesh) != std::string::npos ? why : mesh + ": " + why;
     const std::lock_guard<std::mutex> lock(mutex_);
-    std::cerr << tool_ << ": skipped: " << why << "\n";
-    failures_.push_back(why);
+    std::cerr << tool_ << ": skipped: " << line << "\n";
+    failures_.push_back(line);
   }
 
   std::size_t size() const { return failures_.size(); }

@@ -33,7 +33,7 @@ int main(int argc, char** argv) {
           const auto mesh = reebkit::load_mesh(std::filesystem::path(argv[2]) / (m + ".off")).components.front();
           counts.push_back(reebkit::extract_feature_points(reebkit::build_mesh_graph(mesh)).vertices.size());
         } catch (const std::exception& e) {
-          failures.add(e.what());
+          failures.add(e.what(), m);
         }
       }
       if (counts.empty()) continue;

@@ -50,7 +50,7 @@ int main(int argc, char** argv) {
         const auto analysis = reebkit::analyze_mesh(reebkit::load_mesh(f).components.front());
         samples.push_back({f.stem().string(), label, reebkit::compute_attributes(analysis).signature});
       } catch (const std::exception& e) {
-        failures.add(e.what());
+        failures.add(e.what(), f.string());
       }
     }
     // Per class: mean distance to the same class, to the others, and how many

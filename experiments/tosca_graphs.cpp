@@ -128,7 +128,7 @@ int main(int argc, char** argv) {
         row.open = count(reebkit::analyze_mesh(mesh, keep_holes));
         row.filled = count(reebkit::analyze_mesh(mesh));
       } catch (const std::exception& e) {
-        failures.add(e.what());
+        failures.add(e.what(), file.path.string());
         continue;
       }
       std::cout << "| " << row.name << " | " << row.loops << " | " << row.open.features << " | " << row.open.nodes
