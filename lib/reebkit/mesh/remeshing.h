@@ -44,7 +44,7 @@ struct RemeshOptions {
 /// (SurfaceLocator). A vertex still at an original vertex's position (a
 /// projection onto a convex corner) is moved into its closest original
 /// triangle by 5 % towards each other corner, so no vertex is shared.
-/// Last, the triangles that decimation, smoothing, projection or that move
+/// Last, the triangles that decimation, smoothing, projection or that nudge
 /// left degenerate are flipped or collapsed away
 /// (repair_degenerate_triangles with min_triangle_area; no vertex moves).
 /// Every vertex lies on the original surface (to rounding); the genus is kept
