@@ -16,11 +16,18 @@
 // .matrix per method, rows in .cla order, and prints each method's nearest
 // neighbour rate (query left out, ties to the lower index, classes of fewer
 // than 3 models not queried, as reeb eval).
+// A model a method cannot describe (no mesh file, a mesh that does not load,
+// a descriptor error) is reported and gets the largest distance to every
+// other model in that method's matrix, as a failed entry gets in `reeb
+// distances` (kFailedEntryDistance, 0 on the diagonal); the run goes on and
+// lists the failures at the end (batch_failures.h). Exit status 1 only when
+// a method described no model at all.
 //
 //   D=build/data/shrec07_watertight
 //   build/experiments/baselines $D $D/shrec07_watertight.cla /tmp/out/shrec07
 //   -> /tmp/out/shrec07-d2.matrix, /tmp/out/shrec07-geodesic.matrix,
 //      /tmp/out/shrec07-shape-dna.matrix
+#include "batch_failures.h"
 #include "reebkit/collection/mesh_inputs.h"
 #include "reebkit/core/error.h"
 #include "reebkit/evaluation/distance_matrix.h"
@@ -30,15 +37,18 @@
 #include "reebkit/mesh/mesh_graph.h"
 #include "reebkit/mesh/shape_dna.h"
 #include "reebkit/mesh/surface_sampling.h"
+#include "reebkit/retrieval/all_pairs.h"
 
 #include <omp.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <iostream>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -150,43 +160,59 @@ int main(int argc, char** argv) {
     std::map<std::string, std::filesystem::path> file_of;  // model id (name without extension) -> file
     for (const reebkit::MeshInput& input : reebkit::list_mesh_inputs({argv[1]}))
       file_of[std::filesystem::path(input.name).replace_extension().generic_string()] = input.path;
-    std::vector<std::filesystem::path> files;
+    std::vector<std::filesystem::path> files;  // empty: the model has no mesh file
+    std::vector<std::string> models;
     std::vector<int> label, class_size;
     for (const reebkit::PsbClass& c : classes) {
       class_size.push_back(static_cast<int>(c.models.size()));
       for (const std::string& model : c.models) {
         const auto it = file_of.find(model);
-        if (it == file_of.end())
-          throw reebkit::Error(std::string(argv[2]) + ": model " + model + " has no mesh file in " + argv[1]);
-        files.push_back(it->second);
+        files.push_back(it == file_of.end() ? std::filesystem::path() : it->second);
+        models.push_back(model);
         label.push_back(static_cast<int>(class_size.size()) - 1);
       }
     }
     const Index n = static_cast<Index>(files.size());
     std::vector<Histogram> d2_histograms(files.size()), geodesic_histograms(files.size());
     std::vector<reebkit::ShapeDna> spectra(files.size());
-    std::vector<double> d2_ms(files.size()), geodesic_ms(files.size()), shape_dna_ms(files.size());
-    std::vector<std::string> failure(files.size());  // an exception may not leave the parallel loop
+    // Per method, the time per model, whether it failed, and the failures.
+    struct Outcome {
+      std::vector<double> ms;
+      std::vector<char> failed;
+      BatchFailures failures;
+    };
+    std::array<Outcome, 3> outcome = {Outcome{{}, {}, BatchFailures("baselines d2")},
+                                      Outcome{{}, {}, BatchFailures("baselines geodesic")},
+                                      Outcome{{}, {}, BatchFailures("baselines shape-dna")}};
+    for (Outcome& o : outcome) o.ms.resize(files.size()), o.failed.resize(files.size());
+    const auto fail = [&](std::size_t method, std::size_t k, const std::string& why) {
+      outcome[method].failed[k] = 1;
+      outcome[method].failures.add(why);
+    };
+    const std::array<std::function<void(const Mesh&, std::size_t)>, 3> describe = {
+        [&](const Mesh& mesh, std::size_t k) { d2_histograms[k] = d2(mesh); },
+        [&](const Mesh& mesh, std::size_t k) { geodesic_histograms[k] = geodesic(mesh); },
+        [&](const Mesh& mesh, std::size_t k) { spectra[k] = reebkit::shape_dna(mesh); }};
 #pragma omp parallel for schedule(dynamic)
     for (Index i = 0; i < n; ++i) {
       const auto k = static_cast<std::size_t>(i);
-      try {
-        const Mesh mesh = std::move(reebkit::load_mesh(files[k]).components.front());
-        double t = omp_get_wtime();
-        d2_histograms[k] = d2(mesh);
-        d2_ms[k] = 1e3 * (omp_get_wtime() - t);
-        t = omp_get_wtime();
-        geodesic_histograms[k] = geodesic(mesh);
-        geodesic_ms[k] = 1e3 * (omp_get_wtime() - t);
-        t = omp_get_wtime();
-        spectra[k] = reebkit::shape_dna(mesh);
-        shape_dna_ms[k] = 1e3 * (omp_get_wtime() - t);
+      Mesh mesh;
+      try {  // an exception may not leave the parallel loop
+        if (files[k].empty())
+          throw reebkit::Error(std::string(argv[2]) + ": model " + models[k] + " has no mesh file in " + argv[1]);
+        mesh = std::move(reebkit::load_mesh(files[k]).components.front());
       } catch (const std::exception& e) {
-        failure[k] = e.what();
+        for (std::size_t method = 0; method < outcome.size(); ++method) fail(method, k, e.what());
+        continue;
       }
+      for (std::size_t method = 0; method < describe.size(); ++method) try {
+          const double t = omp_get_wtime();
+          describe[method](mesh, k);
+          outcome[method].ms[k] = 1e3 * (omp_get_wtime() - t);
+        } catch (const std::exception& e) {
+          fail(method, k, e.what());
+        }
     }
-    for (const std::string& message : failure)
-      if (!message.empty()) throw reebkit::Error(message);
     const std::string prefix = argv[3];
     const auto l1_of = [](const std::vector<Histogram>& h) {
       return [&h](std::size_t i, std::size_t j) { return l1_distance(h[i], h[j]); };
@@ -195,17 +221,28 @@ int main(int argc, char** argv) {
       return reebkit::shape_dna_distance(spectra[i], spectra[j]);
     };
     using Distance = std::function<double(std::size_t, std::size_t)>;
-    for (const auto& [method, distance, ms] : {std::tuple{"d2", Distance(l1_of(d2_histograms)), &d2_ms},
-                                               std::tuple{"geodesic", Distance(l1_of(geodesic_histograms)), &geodesic_ms},
-                                               std::tuple{"shape-dna", Distance(shape_dna_of), &shape_dna_ms}}) {
-      const reebkit::DistanceMatrix d = all_pairs(n, distance);
+    const std::array<std::pair<const char*, Distance>, 3> methods = {
+        std::pair{"d2", Distance(l1_of(d2_histograms))}, std::pair{"geodesic", Distance(l1_of(geodesic_histograms))},
+        std::pair{"shape-dna", Distance(shape_dna_of)}};
+    int status = 0;
+    for (std::size_t m = 0; m < methods.size(); ++m) {
+      const auto& [method, distance] = methods[m];
+      const std::vector<char>& failed = outcome[m].failed;
+      const reebkit::DistanceMatrix d = all_pairs(n, [&](std::size_t i, std::size_t j) {
+        if (i == j) return 0.0;
+        return failed[i] || failed[j] ? reebkit::kFailedEntryDistance : distance(i, j);
+      });
       reebkit::write_psb_matrix(prefix + "-" + method + ".matrix", d);
       double total_ms = 0;
-      for (const double x : *ms) total_ms += x;
+      for (const double x : outcome[m].ms) total_ms += x;
+      const auto described = static_cast<double>(files.size() - outcome[m].failures.size());
       std::cout << method << ": nearest neighbour " << nearest_neighbor_rate(d, label, class_size) << " over " << n
-                << " models, descriptor " << total_ms / n << " ms per mesh, wrote " << prefix << "-" << method
+                << " models (" << outcome[m].failures.size() << " failed: the largest float to every other), descriptor "
+                << (described > 0 ? total_ms / described : 0.0) << " ms per mesh, wrote " << prefix << "-" << method
                 << ".matrix\n";
     }
+    for (const Outcome& o : outcome) status = std::max(status, o.failures.finish(files.size()));
+    return status;
   } catch (const std::exception& e) {
     std::cerr << "baselines: " << e.what() << "\n";
     return 1;

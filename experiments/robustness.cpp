@@ -16,6 +16,7 @@
 // are mapped to the original (MeshVariant::original_vertex), and the reverse
 // share, is measured with fast-marching distances on the original whichever
 // method found the points (one yardstick); epsilon = 0.05, the paper's.
+#include "batch_failures.h"
 #include "reebkit/collection/mesh_inputs.h"
 #include "reebkit/core/error.h"
 #include "reebkit/core/timer.h"
@@ -208,8 +209,9 @@ std::vector<VariantRow> sample_mesh(const std::string& name, const Mesh& mesh, s
 
 /// Runs sample_mesh on every mesh (in parallel), ranks each variant among
 /// the group's originals (same method) and writes the table.
-void write_sampling(const fs::path& out, const std::vector<std::pair<std::string, fs::path>>& meshes) {
+int write_sampling(const fs::path& out, const std::vector<std::pair<std::string, fs::path>>& meshes) {
   const auto n = static_cast<std::ptrdiff_t>(meshes.size());
+  BatchFailures failures("robustness sampling");
   std::vector<std::vector<VariantRow>> rows(meshes.size());
   std::vector<std::vector<GraphRecord>> originals(meshes.size(), std::vector<GraphRecord>(2));
 #pragma omp parallel for schedule(dynamic, 1)
@@ -218,8 +220,7 @@ void write_sampling(const fs::path& out, const std::vector<std::pair<std::string
     try {
       rows[k] = sample_mesh(meshes[k].first, load_mesh(meshes[k].second).components.front(), originals[k]);
     } catch (const std::exception& e) {
-#pragma omp critical
-      std::cerr << "robustness: " << meshes[k].second.string() << ": " << e.what() << "\n";
+      failures.add(e.what(), meshes[k].second.string());
     }
 #pragma omp critical
     std::cerr << "  " << meshes[k].first << " done\n";
@@ -245,6 +246,7 @@ void write_sampling(const fs::path& out, const std::vector<std::pair<std::string
       csv << line;
     }
   if (!csv) throw Error(out.string() + ": cannot write the table");
+  return failures.finish(meshes.size());
 }
 
 std::vector<std::pair<std::string, fs::path>> shrec_models(const fs::path& dir, const fs::path& cla, std::size_t per_class) {
@@ -269,71 +271,79 @@ std::vector<Index> read_vts(const fs::path& path) {
 }
 
 /// Section 1 (rigid + scale), 4 (classes) and 5 (hand-picked points) on every SHREC07 mesh.
-void rigid(const fs::path& out, const fs::path& dir, const fs::path& cla, int similarities) {
+int rigid(const fs::path& out, const fs::path& dir, const fs::path& cla, int similarities) {
   const std::vector<std::pair<std::string, fs::path>> models = shrec_models(dir, cla, 1000);
   const auto n = static_cast<std::ptrdiff_t>(models.size());
   std::vector<std::string> rigid_rows(models.size()), mesh_rows(models.size());
   std::vector<GraphRecord> records(models.size());
+  BatchFailures failures("robustness rigid");
+  std::vector<char> described(models.size(), 0);
 #pragma omp parallel for schedule(dynamic, 1)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     const auto k = static_cast<std::size_t>(i);
     const std::string& name = models[k].first;
-    const Mesh mesh = load_mesh(models[k].second).components.front();
-    const Analysed a = analyse(mesh, Geodesic::Dijkstra);
-    records[k] = a.record;
-    std::string rows;
-    for (int s = 1; s <= similarities; ++s) {
-      const Similarity similarity = random_similarity(mesh, static_cast<std::uint64_t>(s));
-      const Analysed b = analyse(transformed(mesh, similarity), Geodesic::Dijkstra);
-      double attribute = 0;  // largest difference of a node or edge attribute or signature entry
-      const bool same_shape = b.record.node_attributes.size() == a.record.node_attributes.size() &&
-                              b.record.edge_attributes.size() == a.record.edge_attributes.size();
-      if (same_shape) {
-        for (std::size_t j = 0; j < a.record.node_attributes.size(); ++j)
-          attribute = std::max(attribute, std::abs(a.record.node_attributes[j] - b.record.node_attributes[j]));
-        for (std::size_t j = 0; j < a.record.edge_attributes.size(); ++j)
-          attribute = std::max(attribute, std::abs(a.record.edge_attributes[j] - b.record.edge_attributes[j]));
-        for (std::size_t j = 0; j < a.record.signature.size(); ++j)
-          attribute = std::max(attribute, std::abs(a.record.signature[j] - b.record.signature[j]));
+    try {  // an exception may not leave the parallel loop
+      const Mesh mesh = load_mesh(models[k].second).components.front();
+      const Analysed a = analyse(mesh, Geodesic::Dijkstra);
+      records[k] = a.record;
+      std::string rows;
+      for (int s = 1; s <= similarities; ++s) {
+        const Similarity similarity = random_similarity(mesh, static_cast<std::uint64_t>(s));
+        const Analysed b = analyse(transformed(mesh, similarity), Geodesic::Dijkstra);
+        double attribute = 0;  // largest difference of a node or edge attribute or signature entry
+        const bool same_shape = b.record.node_attributes.size() == a.record.node_attributes.size() &&
+                                b.record.edge_attributes.size() == a.record.edge_attributes.size();
+        if (same_shape) {
+          for (std::size_t j = 0; j < a.record.node_attributes.size(); ++j)
+            attribute = std::max(attribute, std::abs(a.record.node_attributes[j] - b.record.node_attributes[j]));
+          for (std::size_t j = 0; j < a.record.edge_attributes.size(); ++j)
+            attribute = std::max(attribute, std::abs(a.record.edge_attributes[j] - b.record.edge_attributes[j]));
+          for (std::size_t j = 0; j < a.record.signature.size(); ++j)
+            attribute = std::max(attribute, std::abs(a.record.signature[j] - b.record.signature[j]));
+        }
+        const FeaturePoints &fa = a.analysis.features, &fb = b.analysis.features;
+        char line[256];
+        std::snprintf(line, sizeof line, "%s,%d,%.6f,%d,%d,%zu,%zu,%zu,%zu,%d,%d,%d,%.3g\n", name.c_str(), s, similarity.scale,
+                      sorted({fa.source1, fa.source2}) == sorted({fb.source1, fb.source2}) ? 1 : 0,
+                      sorted(fa.extrema1) == sorted(fb.extrema1) && sorted(fa.extrema2) == sorted(fb.extrema2) ? 1 : 0,
+                      fa.extrema1.size(), fb.extrema1.size(), fa.extrema2.size(), fb.extrema2.size(),
+                      sorted(b.analysis.features.vertices) == sorted(a.analysis.features.vertices) ? 1 : 0,
+                      b.analysis.reeb.edges == a.analysis.reeb.edges && b.analysis.reeb.vertex_node == a.analysis.reeb.vertex_node ? 1 : 0,
+                      same_shape ? 1 : 0, same_shape ? attribute : -1.0);
+        rows += line;
       }
-      const FeaturePoints &fa = a.analysis.features, &fb = b.analysis.features;
-      char line[256];
-      std::snprintf(line, sizeof line, "%s,%d,%.6f,%d,%d,%zu,%zu,%zu,%zu,%d,%d,%d,%.3g\n", name.c_str(), s, similarity.scale,
-                    sorted({fa.source1, fa.source2}) == sorted({fb.source1, fb.source2}) ? 1 : 0,
-                    sorted(fa.extrema1) == sorted(fb.extrema1) && sorted(fa.extrema2) == sorted(fb.extrema2) ? 1 : 0,
-                    fa.extrema1.size(), fb.extrema1.size(), fa.extrema2.size(), fb.extrema2.size(),
-                    sorted(b.analysis.features.vertices) == sorted(a.analysis.features.vertices) ? 1 : 0,
-                    b.analysis.reeb.edges == a.analysis.reeb.edges && b.analysis.reeb.vertex_node == a.analysis.reeb.vertex_node ? 1 : 0,
-                    same_shape ? 1 : 0, same_shape ? attribute : -1.0);
-      rows += line;
-    }
-    rigid_rows[k] = rows;
-    // Hand-picked points against ours (file vertex ids), within 0.05 and 0.10 of the diameter.
-    const fs::path vts = models[k].second.parent_path() / "features" / (models[k].second.stem().string() + ".vts");
-    std::vector<Index> hand;
-    {
-      std::map<Index, Index> file_to_mesh;
-      for (Index v = 0; v < a.analysis.mesh.num_vertices(); ++v)
-        if (a.analysis.mesh.source_index(v) != kInvalidIndex) file_to_mesh[a.analysis.mesh.source_index(v)] = v;
-      for (const Index id : read_vts(vts)) {
-        const auto it = file_to_mesh.find(id);
-        if (it != file_to_mesh.end()) hand.push_back(it->second);
+      rigid_rows[k] = rows;
+      // Hand-picked points against ours (file vertex ids), within 0.05 and 0.10 of the diameter.
+      const fs::path vts = models[k].second.parent_path() / "features" / (models[k].second.stem().string() + ".vts");
+      std::vector<Index> hand;
+      {
+        std::map<Index, Index> file_to_mesh;
+        for (Index v = 0; v < a.analysis.mesh.num_vertices(); ++v)
+          if (a.analysis.mesh.source_index(v) != kInvalidIndex) file_to_mesh[a.analysis.mesh.source_index(v)] = v;
+        for (const Index id : read_vts(vts)) {
+          const auto it = file_to_mesh.find(id);
+          if (it != file_to_mesh.end()) hand.push_back(it->second);
+        }
       }
+      const std::vector<Index> ours = surface_features(a.analysis);
+      const double diameter = a.analysis.features.diameter;
+      FeatureOptions fmm_features;
+      fmm_features.geodesic = Geodesic::FastMarching;
+      const std::size_t fmm_count = extract_feature_points(a.analysis.graph, fmm_features).vertices.size();
+      char line[512];
+      std::snprintf(line, sizeof line, "%s,%d,%d,%d,%zu,%zu,%zu,%.4f,%.4f,%.4f,%.4f\n", name.c_str(),
+                    a.analysis.reeb.num_nodes(), a.analysis.reeb.leaf_count(), a.analysis.reeb.independent_cycles(),
+                    ours.size(), fmm_count, hand.size(),
+                    share_within(a.analysis.graph, ours, hand, 0.05 * diameter),
+                    share_within(a.analysis.graph, hand, ours, 0.05 * diameter),
+                    share_within(a.analysis.graph, ours, hand, 0.10 * diameter),
+                    share_within(a.analysis.graph, hand, ours, 0.10 * diameter));
+      mesh_rows[k] = line;
+      described[k] = 1;
+    } catch (const std::exception& e) {
+      rigid_rows[k].clear();
+      failures.add(e.what(), models[k].second.string());
     }
-    const std::vector<Index> ours = surface_features(a.analysis);
-    const double diameter = a.analysis.features.diameter;
-    FeatureOptions fmm_features;
-    fmm_features.geodesic = Geodesic::FastMarching;
-    const std::size_t fmm_count = extract_feature_points(a.analysis.graph, fmm_features).vertices.size();
-    char line[512];
-    std::snprintf(line, sizeof line, "%s,%d,%d,%d,%zu,%zu,%zu,%.4f,%.4f,%.4f,%.4f\n", name.c_str(),
-                  a.analysis.reeb.num_nodes(), a.analysis.reeb.leaf_count(), a.analysis.reeb.independent_cycles(),
-                  ours.size(), fmm_count, hand.size(),
-                  share_within(a.analysis.graph, ours, hand, 0.05 * diameter),
-                  share_within(a.analysis.graph, hand, ours, 0.05 * diameter),
-                  share_within(a.analysis.graph, ours, hand, 0.10 * diameter),
-                  share_within(a.analysis.graph, hand, ours, 0.10 * diameter));
-    mesh_rows[k] = line;
   }
   std::ofstream r(out / "rigid.csv"), m(out / "shrec_meshes.csv"), p(out / "shrec_pairs.csv");
   r << "mesh,similarity,scale,same_diameter_ends,same_extrema,extrema1,variant_extrema1,extrema2,variant_extrema2,"
@@ -346,6 +356,7 @@ void rigid(const fs::path& out, const fs::path& dir, const fs::path& cla, int si
 #pragma omp parallel for schedule(dynamic, 4)
   for (std::ptrdiff_t i = 0; i < n; ++i)
     for (std::ptrdiff_t j = i + 1; j < n; ++j) {
+      if (!described[static_cast<std::size_t>(i)] || !described[static_cast<std::size_t>(j)]) continue;
       char line[128];
       std::snprintf(line, sizeof line, "%td,%td,%.6g\n", i, j,
                     match_graphs(graphs[static_cast<std::size_t>(i)], graphs[static_cast<std::size_t>(j)]).distance);
@@ -353,6 +364,7 @@ void rigid(const fs::path& out, const fs::path& dir, const fs::path& cla, int si
     }
   for (const std::string& rows : pair_rows) p << rows;
   if (!r || !m || !p) throw Error(out.string() + ": cannot write the SHREC07 tables");
+  return failures.finish(models.size());
 }
 
 /// "michael12" -> "michael".
@@ -363,15 +375,27 @@ std::string pose_class(std::string stem) {
 
 /// Section 3: each TOSCA pose against the first pose of its class (same
 /// triangulation: vertex i corresponds), both methods; all pairs of graph distances.
-void tosca(const fs::path& out, const fs::path& dir) {
-  std::vector<MeshInput> inputs = list_mesh_inputs({dir.string()});
-  const auto n = static_cast<std::ptrdiff_t>(inputs.size());
-  std::vector<std::array<Analysed, 2>> analysed(inputs.size());
+int tosca(const fs::path& out, const fs::path& dir) {
+  const std::vector<MeshInput> all = list_mesh_inputs({dir.string()});
+  const auto n = static_cast<std::ptrdiff_t>(all.size());
+  std::vector<std::array<Analysed, 2>> analysed_all(all.size());
+  BatchFailures failures("robustness tosca");
+  std::vector<char> described(all.size(), 0);
 #pragma omp parallel for schedule(dynamic, 1)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
-    const Mesh mesh = load_mesh(inputs[static_cast<std::size_t>(i)].path).components.front();
-    for (std::size_t m = 0; m < 2; ++m) analysed[static_cast<std::size_t>(i)][m] = analyse(mesh, kMethods[m]);
+    const auto k = static_cast<std::size_t>(i);
+    try {  // an exception may not leave the parallel loop
+      const Mesh mesh = load_mesh(all[k].path).components.front();
+      for (std::size_t m = 0; m < 2; ++m) analysed_all[k][m] = analyse(mesh, kMethods[m]);
+      described[k] = 1;
+    } catch (const std::exception& e) {
+      failures.add(e.what(), all[k].path.string());
+    }
   }
+  std::vector<MeshInput> inputs;  // the meshes described, in order
+  std::vector<std::array<Analysed, 2>> analysed;
+  for (std::size_t k = 0; k < all.size(); ++k)
+    if (described[k]) inputs.push_back(all[k]), analysed.push_back(std::move(analysed_all[k]));
   std::ofstream poses(out / "tosca_poses.csv"), pairs(out / "tosca_pairs.csv");
   poses << "mesh,class,reference,method,features,reference_features,forward,backward,nodes,reference_nodes,leaves,"
            "reference_leaves,distance\n";
@@ -403,6 +427,7 @@ void tosca(const fs::path& out, const fs::path& dir) {
               << geodesic_name(kMethods[m]) << "," << match_graphs(analysed[i][m].record, analysed[j][m].record).distance
               << "\n";
   if (!poses || !pairs) throw Error(out.string() + ": cannot write the TOSCA tables");
+  return failures.finish(all.size());
 }
 
 /// Section 6: the pipeline's time on `mesh` decimated to each face count
@@ -467,19 +492,20 @@ int main(int argc, char** argv) {
     }
     if (args.size() < 3) return usage();
     Timer timer;
+    int status = 0;  // 1 when every mesh failed
     const fs::path out = args[1];
     fs::create_directories(out);
     if (args[0] == "rigid" && args.size() >= 4) {
-      rigid(out, args[2], args[3], args.size() > 4 ? std::stoi(args[4]) : 3);
+      status = rigid(out, args[2], args[3], args.size() > 4 ? std::stoi(args[4]) : 3);
     } else if (args[0] == "sampling" && args.size() >= 4) {
       std::vector<std::pair<std::string, fs::path>> meshes;
       for (const MeshInput& input : list_mesh_inputs(std::vector<std::string>(args.begin() + 3, args.end())))
         meshes.emplace_back(input.path.stem().string(), input.path);
-      write_sampling(out / ("sampling_" + args[2] + ".csv"), meshes);
+      status = write_sampling(out / ("sampling_" + args[2] + ".csv"), meshes);
     } else if (args[0] == "shrec-sample" && args.size() == 5) {
-      write_sampling(out / "sampling_shrec07.csv", shrec_models(args[2], args[3], std::stoul(args[4])));
+      status = write_sampling(out / "sampling_shrec07.csv", shrec_models(args[2], args[3], std::stoul(args[4])));
     } else if (args[0] == "tosca") {
-      tosca(out, args[2]);
+      status = tosca(out, args[2]);
     } else if (args[0] == "timing" && args.size() >= 4) {
       std::vector<Index> faces;
       for (std::size_t i = 3; i < args.size(); ++i) faces.push_back(static_cast<Index>(std::stol(args[i])));
@@ -488,6 +514,7 @@ int main(int argc, char** argv) {
       return usage();
     }
     std::cerr << "robustness " << args[0] << ": " << timer.lap() / 1000.0 << " s\n";
+    return status;
   } catch (const std::exception& e) {
     std::cerr << "robustness " << args[0] << ": " << e.what() << "\n";
     return 1;

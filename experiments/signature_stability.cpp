@@ -4,6 +4,7 @@
 //
 //   build/experiments/signature_stability build/data/tosca_dev > results/signature_stability.md
 #include "reebkit/collection/mesh_inputs.h"
+#include "batch_failures.h"
 #include "reebkit/mesh/load_mesh.h"
 #include "reebkit/pipeline/analyze_mesh.h"
 
@@ -39,12 +40,18 @@ int main(int argc, char** argv) {
   }
   try {
     std::vector<Sample> samples;
-    for (const reebkit::MeshInput& input : reebkit::list_mesh_inputs({argv[1]})) {
+    BatchFailures failures("signature_stability");
+    const std::vector<reebkit::MeshInput> inputs = reebkit::list_mesh_inputs({argv[1]});
+    for (const reebkit::MeshInput& input : inputs) {
       const std::filesystem::path& f = input.path;
       std::string label = f.stem().string();
       while (!label.empty() && std::isdigit(static_cast<unsigned char>(label.back()))) label.pop_back();
-      const auto analysis = reebkit::analyze_mesh(reebkit::load_mesh(f).components.front());
-      samples.push_back({f.stem().string(), label, reebkit::compute_attributes(analysis).signature});
+      try {
+        const auto analysis = reebkit::analyze_mesh(reebkit::load_mesh(f).components.front());
+        samples.push_back({f.stem().string(), label, reebkit::compute_attributes(analysis).signature});
+      } catch (const std::exception& e) {
+        failures.add(e.what(), f.string());
+      }
     }
     // Per class: mean distance to the same class, to the others, and how many
     // meshes have their nearest neighbour in their own class.
@@ -78,6 +85,8 @@ int main(int argc, char** argv) {
       hits += c[4];
     }
     std::printf("\nNearest neighbour in the same class: %d of %zu meshes.\n", static_cast<int>(hits), samples.size());
+    std::fflush(stdout);
+    return failures.finish(inputs.size());
   } catch (const std::exception& e) {
     std::cerr << "signature_stability: " << e.what() << "\n";
     return 1;

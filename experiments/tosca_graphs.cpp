@@ -6,6 +6,7 @@
 //   build/experiments/tosca_graphs /tmp/data/tosca_dev > results/tosca_graphs.md
 #include "reebkit/collection/mesh_inputs.h"
 #include "reebkit/core/timer.h"
+#include "batch_failures.h"
 #include "reebkit/mesh/load_mesh.h"
 #include "reebkit/mesh/mesh_topology.h"
 #include "reebkit/pipeline/analyze_mesh.h"
@@ -116,14 +117,20 @@ int main(int argc, char** argv) {
               << reebkit::HoleFillingOptions{}.max_loop_length << " sqrt(area)). L/C = leaves/cycles.\n\n"
               << "| mesh | boundary loops | features | nodes | L/C | features filled | nodes filled | L/C filled |\n"
               << "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+    BatchFailures failures("tosca_graphs");
     for (const reebkit::MeshInput& file : files) {
-      const reebkit::Mesh mesh = reebkit::load_mesh(file.path).components.front();
       Row row;
-      row.name = file.path.stem().string();
-      row.mesh = mesh;
-      row.loops = reebkit::analyze_topology(mesh).boundary_loops;
-      row.open = count(reebkit::analyze_mesh(mesh, keep_holes));
-      row.filled = count(reebkit::analyze_mesh(mesh));
+      try {
+        const reebkit::Mesh mesh = reebkit::load_mesh(file.path).components.front();
+        row.name = file.path.stem().string();
+        row.mesh = mesh;
+        row.loops = reebkit::analyze_topology(mesh).boundary_loops;
+        row.open = count(reebkit::analyze_mesh(mesh, keep_holes));
+        row.filled = count(reebkit::analyze_mesh(mesh));
+      } catch (const std::exception& e) {
+        failures.add(e.what(), file.path.string());
+        continue;
+      }
       std::cout << "| " << row.name << " | " << row.loops << " | " << row.open.features << " | " << row.open.nodes
                 << " | " << leaves_cycles(row.open) << " | " << row.filled.features << " | " << row.filled.nodes
                 << " | " << leaves_cycles(row.filled) << " |\n";
@@ -158,10 +165,17 @@ int main(int argc, char** argv) {
       if (holed == rows.end()) continue;
       for (const Row& r : rows) {
         if (r.loops > 0) continue;
-        const reebkit::Mesh mesh = punched(r.mesh, holed->mesh);
-        const reebkit::MeshTopology topology = reebkit::analyze_topology(mesh);
-        const GraphCounts open = count(reebkit::analyze_mesh(mesh, keep_holes));
-        const GraphCounts filled = count(reebkit::analyze_mesh(mesh));
+        reebkit::MeshTopology topology;
+        GraphCounts open, filled;
+        try {
+          const reebkit::Mesh mesh = punched(r.mesh, holed->mesh);
+          topology = reebkit::analyze_topology(mesh);
+          open = count(reebkit::analyze_mesh(mesh, keep_holes));
+          filled = count(reebkit::analyze_mesh(mesh));
+        } catch (const std::exception& e) {
+          failures.add(r.name + " with the holes of " + holed->name + ": " + e.what());
+          continue;
+        }
         std::cout << "| " << r.name << " | " << holed->name << " | " << topology.boundary_edges << " / "
                   << topology.boundary_loops << " | " << r.open.features << " | "
                   << leaves_cycles(r.open) << " | " << open.features << " | " << leaves_cycles(open) << " | "
@@ -169,6 +183,7 @@ int main(int argc, char** argv) {
       }
     }
     std::cerr << "tosca_graphs: " << timer.lap() / 1000.0 << " s\n";
+    return failures.finish(files.size());
   } catch (const std::exception& e) {
     std::cerr << "tosca_graphs: " << e.what() << "\n";
     return 1;

@@ -1,8 +1,12 @@
 #include "reebkit/mesh/decimation.h"
 
 #include "reebkit/core/error.h"
+#include "reebkit/io/psb_classes.h"
+#include "reebkit/mesh/degenerate_triangles.h"
+#include "reebkit/mesh/load_mesh.h"
 #include "reebkit/mesh/mesh_topology.h"
 #include "reebkit/mesh/shapes.h"
+#include "support/test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -39,6 +43,29 @@ TEST(Decimation, RatioOneKeepsTheMeshAndBadRatiosThrow) {
   EXPECT_EQ(same.mesh.triangles, mesh.triangles);
   for (const double bad : {0.0, -0.5, 1.5})
     EXPECT_THROW(decimate_mesh(mesh, DecimationOptions{bad, 0.02}), InvalidArgument);
+}
+
+// Every SHREC07 model of the first class, the first model of every class
+// and 351 (which holds triangles of zero area), decimated to a tenth and to
+// a half: no triangle at or below the bound, the kept vertices exactly where
+// they were.
+TEST(Decimation, NoDegenerateTriangleOnShrec07) {
+  REEBKIT_REQUIRE_DATASET(dir, "shrec07_watertight");
+  const std::vector<PsbClass> classes = read_psb_classes(dir / "shrec07_watertight.cla");
+  std::vector<std::string> models = classes.front().models;
+  for (const PsbClass& c : classes) models.push_back(c.models.front());
+  models.push_back("351");
+  for (const std::string& model : models) {
+    const Mesh mesh = std::move(load_mesh(dir / (model + ".off")).components.front());
+    for (const double ratio : {0.1, 0.5}) {
+      SCOPED_TRACE(model + " ratio " + std::to_string(ratio));
+      const DecimationOptions options{ratio, 0.02};
+      const MeshVariant out = decimate_mesh(mesh, options);
+      EXPECT_TRUE(degenerate_triangles(out.mesh, options.min_triangle_area).empty());
+      for (Index v = 0; v < out.mesh.num_vertices(); ++v)
+        ASSERT_EQ(out.mesh.vertices.row(v), mesh.vertices.row(out.original_vertex[static_cast<std::size_t>(v)]));
+    }
+  }
 }
 
 }  // namespace

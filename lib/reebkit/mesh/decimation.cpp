@@ -1,6 +1,7 @@
 #include "reebkit/mesh/decimation.h"
 
 #include "reebkit/core/error.h"
+#include "reebkit/mesh/degenerate_triangles.h"
 
 #include <meshoptimizer.h>
 
@@ -9,6 +10,7 @@
 #include <cmath>
 #include <map>
 #include <string>
+#include <utility>
 
 namespace reebkit {
 
@@ -54,6 +56,9 @@ MeshVariant decimate_mesh(const Mesh& mesh, const DecimationOptions& options) {
   if (!(options.vertex_ratio > 0.0 && options.vertex_ratio <= 1.0))
     throw InvalidArgument(mesh.source + ": decimation ratio " + std::to_string(options.vertex_ratio) +
                           " is outside (0, 1]");
+  if (!(options.min_triangle_area >= 0.0 && options.min_triangle_area < 1.0))
+    throw InvalidArgument(mesh.source + ": smallest triangle area " + std::to_string(options.min_triangle_area) +
+                          " x the mean is outside [0, 1)");
   MeshVariant out;
   const auto nv = static_cast<std::size_t>(mesh.num_vertices());
   const auto target = static_cast<std::size_t>(std::llround(options.vertex_ratio * static_cast<double>(nv)));
@@ -90,6 +95,16 @@ MeshVariant decimate_mesh(const Mesh& mesh, const DecimationOptions& options) {
   out.mesh.triangles.resize(static_cast<Index>(kept.size() / 3), 3);
   for (std::size_t i = 0; i < kept.size(); ++i)
     out.mesh.triangles(static_cast<Index>(i / 3), static_cast<Index>(i % 3)) = new_id[kept[i]];
+  if (target >= nv) return out;
+  TriangleRepair repaired = repair_degenerate_triangles(out.mesh, options.min_triangle_area);
+  if (repaired.remaining > 0)
+    throw InvalidMeshError(mesh.source, "decimation to " + std::to_string(options.vertex_ratio) + " of the vertices left " +
+                                            std::to_string(repaired.remaining) + " triangles of at most " +
+                                            std::to_string(options.min_triangle_area) +
+                                            " x the mean area that no edge flip or collapse removes");
+  for (Index& v : repaired.input_vertex) v = out.original_vertex[static_cast<std::size_t>(v)];
+  out.original_vertex = std::move(repaired.input_vertex);
+  out.mesh = std::move(repaired.mesh);
   return out;
 }
 

@@ -14,15 +14,28 @@ struct DecimationOptions {
   /// The target may be missed by this share of the target count: the
   /// collapses are steered by triangle count, then corrected.
   double tolerance = 0.02;
+  /// No triangle of the result has an area at or below this fraction of its
+  /// mean triangle area (degenerate_triangles.h), so no vertex has a star
+  /// without area: the collapses can fold slivers and needles of zero area,
+  /// which are flipped or collapsed away. 1e-6: far above a triangle of zero
+  /// area to rounding (1e-12 of the largest, see laplace_beltrami.h), far
+  /// below the small but well-shaped triangles that quadric collapse keeps
+  /// on fine detail (an ear, a finger), which no flip or collapse could
+  /// remove without folding the surface.
+  double min_triangle_area = 1e-6;
 };
 
 /// `mesh` decimated by quadric edge collapse to about vertex_ratio x #V
 /// vertices (within the tolerance unless the collapses stop first: a collapse
 /// that would flip a triangle is refused, so a very small target on a coarse
 /// mesh may not be reached; two triangles folded onto each other by a
-/// collapse, a fin on one edge, are both removed). The kept vertices keep
-/// their positions, so original_vertex[v] is the vertex of `mesh` that v is.
-/// Throws InvalidArgument naming mesh.source for a ratio outside (0, 1].
+/// collapse, a fin on one edge, are both removed), then its degenerate
+/// triangles repaired (repair_degenerate_triangles with min_triangle_area),
+/// which may remove a few more vertices. The kept vertices keep their
+/// positions, so original_vertex[v] is the vertex of `mesh` that v is.
+/// Throws InvalidArgument naming mesh.source for a ratio outside (0, 1] or a
+/// min_triangle_area outside [0, 1), InvalidMeshError naming mesh.source and
+/// the ratio when a degenerate triangle cannot be repaired.
 MeshVariant decimate_mesh(const Mesh& mesh, const DecimationOptions& options = {});
 
 }  // namespace reebkit

@@ -44,13 +44,19 @@ LaplaceBeltrami laplace_beltrami(const Mesh& mesh, const LaplaceBeltramiOptions&
       for (int b = 0; b < 3; ++b) mass.emplace_back(v[a], v[b], area / (a == b ? 6 : 12));
     }
   }
-  const auto bare = std::find(covered.begin(), covered.end(), false);
-  if (bare != covered.end())
-    throw InvalidMeshError(source, "vertex " + std::to_string(bare - covered.begin()) +
-                                       " lies on triangles of zero area only: the Laplace-Beltrami operator is "
-                                       "undefined there");
-  const Eigen::Index n = mesh.num_vertices();
+  // Rows and columns for the vertices with area only.
   LaplaceBeltrami result;
+  std::vector<Index> row(covered.size(), kInvalidIndex);
+  for (std::size_t v = 0; v < covered.size(); ++v)
+    if (covered[v]) {
+      row[v] = static_cast<Index>(result.vertex.size());
+      result.vertex.push_back(static_cast<Index>(v));
+    }
+  if (result.vertex.empty()) throw InvalidMeshError(source, "no triangle of nonzero area: no Laplace-Beltrami operator");
+  for (std::vector<Triplet>* entries : {&stiffness, &mass})
+    for (Triplet& e : *entries)
+      e = Triplet(row[static_cast<std::size_t>(e.row())], row[static_cast<std::size_t>(e.col())], e.value());
+  const auto n = static_cast<Eigen::Index>(result.vertex.size());
   result.stiffness.resize(n, n);
   result.stiffness.setFromTriplets(stiffness.begin(), stiffness.end());
   result.mass.resize(n, n);

@@ -16,6 +16,8 @@
 
 #include <Eigen/SparseCore>
 
+#include <vector>
+
 namespace reebkit {
 
 /// The mass matrix of the linear elements.
@@ -34,7 +36,8 @@ struct LaplaceBeltramiOptions {
   MassMatrix mass = MassMatrix::consistent;  ///< see MassMatrix
 };
 
-/// The stiffness and mass matrices, #V x #V, symmetric, both full (upper and
+/// The stiffness and mass matrices, n x n for the n vertices with area (all
+/// #V on a mesh without degenerate triangles), symmetric, both full (upper and
 /// lower triangles stored). stiffness(i, j) = -(cot a_ij + cot b_ij) / 2 for
 /// an edge ij opposite the angles a_ij and b_ij (one angle on a boundary
 /// edge), the diagonal the negated off-diagonal row sum: positive
@@ -44,14 +47,21 @@ struct LaplaceBeltramiOptions {
 struct LaplaceBeltrami {
   Eigen::SparseMatrix<double> stiffness;
   Eigen::SparseMatrix<double> mass;
+  /// The mesh vertex of each row (and column), increasing: every vertex on a
+  /// triangle of nonzero area.
+  std::vector<Index> vertex;
 };
 
 /// The matrices of `mesh`. A triangle of zero area (to rounding: twice its
 /// area at most 1e-12 of its longest edge squared; the cleaned meshes of
 /// real collections have a few, e.g. SHREC07's 351.off) spans no surface and
-/// its cotangents are undefined: it is left out of both matrices. Throws
-/// InvalidMeshError naming mesh.source when the mesh has no triangle or a
-/// vertex lies on triangles of zero area only (its rows would be zero).
+/// its cotangents are undefined: it is left out of both matrices, and so is
+/// a vertex left on triangles of zero area only (its rows would be zero and
+/// the mass matrix singular), as the mesh reader drops the vertices no
+/// triangle uses (mesh_cleanup.h). Those slits are Neumann borders of no
+/// length: the spectrum of the surface does not change. Throws
+/// InvalidMeshError naming mesh.source when the mesh has no triangle of
+/// nonzero area.
 LaplaceBeltrami laplace_beltrami(const Mesh& mesh, const LaplaceBeltramiOptions& options = {});
 
 }  // namespace reebkit

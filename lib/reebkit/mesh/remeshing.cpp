@@ -2,11 +2,13 @@
 
 #include "reebkit/core/error.h"
 #include "reebkit/mesh/decimation.h"
+#include "reebkit/mesh/degenerate_triangles.h"
 #include "reebkit/mesh/mesh_graph.h"
 #include "reebkit/mesh/resampling.h"
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace reebkit {
 
@@ -43,13 +45,22 @@ MeshVariant remesh(const Mesh& mesh, const RemeshOptions& options) {
   if (target < 4) throw InvalidArgument(mesh.source + ": remeshing target of " + std::to_string(target) + " vertices is below 4");
   if (options.smoothing_iterations < 0 || !(options.smoothing_step >= 0.0 && options.smoothing_step <= 1.0))
     throw InvalidArgument(mesh.source + ": negative smoothing iterations or a smoothing step outside [0, 1]");
+  if (!(options.min_triangle_area >= 0.0 && options.min_triangle_area < 1.0))
+    throw InvalidArgument(mesh.source + ": smallest triangle area " + std::to_string(options.min_triangle_area) +
+                          " x the mean is outside [0, 1)");
+  const std::string with_seed = "remeshing with seed " + std::to_string(options.seed) + ": ";
   const SurfaceLocator original(mesh);
 
   Mesh dense = resample_mesh(mesh, ResamplingOptions{0.2, options.seed});
   for (std::uint64_t round = 1; dense.num_vertices() < 4 * static_cast<std::int64_t>(target); ++round)
     dense = resample_mesh(dense, ResamplingOptions{0.2, options.seed + round});
   MeshVariant out;
-  out.mesh = decimate_mesh(dense, DecimationOptions{static_cast<double>(target) / dense.num_vertices(), 0.02}).mesh;
+  try {
+    out.mesh = decimate_mesh(dense, DecimationOptions{static_cast<double>(target) / dense.num_vertices(), 0.02,
+                                                      options.min_triangle_area}).mesh;
+  } catch (const InvalidMeshError& e) {
+    throw InvalidMeshError(mesh.source, with_seed + e.what());
+  }
   out.mesh.source = mesh.source;
   Mesh& result = out.mesh;
 
@@ -70,7 +81,6 @@ MeshVariant remesh(const Mesh& mesh, const RemeshOptions& options) {
   }
 
   const double tiny = 1e-9 * bounding_box_diagonal(mesh);
-  out.original_vertex.resize(static_cast<std::size_t>(result.num_vertices()));
   for (Index v = 0; v < result.num_vertices(); ++v) {
     const Vec3 p = result.vertices.row(v);
     const SurfacePoint s = original.closest(p);
@@ -82,8 +92,17 @@ MeshVariant remesh(const Mesh& mesh, const RemeshOptions& options) {
       result.vertices.row(v) = (0.9 * a + 0.05 * b + 0.05 * c).transpose();
       break;
     }
-    out.original_vertex[static_cast<std::size_t>(v)] = original.nearest_vertex(result.vertices.row(v).transpose());
   }
+
+  TriangleRepair repaired = repair_degenerate_triangles(result, options.min_triangle_area);
+  if (repaired.remaining > 0)
+    throw InvalidMeshError(mesh.source, with_seed + std::to_string(repaired.remaining) + " triangles of at most " +
+                                            std::to_string(options.min_triangle_area) +
+                                            " x the mean area are left that no edge flip or collapse removes");
+  result = std::move(repaired.mesh);
+  out.original_vertex.resize(static_cast<std::size_t>(result.num_vertices()));
+  for (Index v = 0; v < result.num_vertices(); ++v)
+    out.original_vertex[static_cast<std::size_t>(v)] = original.nearest_vertex(result.vertices.row(v).transpose());
   return out;
 }
 

@@ -25,6 +25,15 @@ struct RemeshOptions {
   int smoothing_iterations = 1;
   double smoothing_step = 0.5;  ///< in [0, 1]
   std::uint64_t seed = 1;  ///< the jitter of the dense sampling; same seed, same mesh
+  /// No triangle of the result has an area at or below this fraction of its
+  /// mean triangle area (degenerate_triangles.h), so no vertex has a star
+  /// without area: decimation, smoothing and projection can leave slivers
+  /// and needles of zero area, which are flipped or collapsed away. 1e-6: far above a triangle of zero
+  /// area to rounding (1e-12 of the largest, see laplace_beltrami.h), far
+  /// below the small but well-shaped triangles that quadric collapse keeps
+  /// on fine detail (an ear, a finger), which no flip or collapse could
+  /// remove without folding the surface.
+  double min_triangle_area = 1e-6;
 };
 
 /// A new triangulation of the surface of `mesh` with about target vertices:
@@ -35,11 +44,15 @@ struct RemeshOptions {
 /// (SurfaceLocator). A vertex still at an original vertex's position (a
 /// projection onto a convex corner) is moved into its closest original
 /// triangle by 5 % towards each other corner, so no vertex is shared.
+/// Last, the triangles that decimation, smoothing, projection or that nudge
+/// left degenerate are flipped or collapsed away
+/// (repair_degenerate_triangles with min_triangle_area; no vertex moves).
 /// Every vertex lies on the original surface (to rounding); the genus is kept
 /// unless the target is too small for the shape. original_vertex: the nearest
 /// original vertex on the surface.
 /// Throws InvalidArgument naming mesh.source for a target below 4 vertices,
-/// neither target given, or smoothing options out of range.
+/// neither target given, or options out of range; InvalidMeshError naming
+/// mesh.source and the seed when a degenerate triangle cannot be repaired.
 MeshVariant remesh(const Mesh& mesh, const RemeshOptions& options);
 
 }  // namespace reebkit

@@ -68,10 +68,11 @@ ShapeDna shape_dna(const Mesh& mesh, const ShapeDnaOptions& options) {
   if (!(options.shift < 0)) throw InvalidArgument("shape_dna: the shift must be negative");
   const std::string source = mesh.source.empty() ? "mesh" : mesh.source;
   const Eigen::Index wanted = options.eigenvalues + 1;  // with the zero eigenvalue
-  if (mesh.num_vertices() <= wanted)
-    throw InvalidMeshError(source, std::to_string(mesh.num_vertices()) + " vertices: too few for " +
-                                       std::to_string(options.eigenvalues) + " Laplace-Beltrami eigenvalues");
   LaplaceBeltrami operators = laplace_beltrami(mesh, {options.mass});
+  const auto n = static_cast<Eigen::Index>(operators.vertex.size());  // the vertices with area
+  if (n <= wanted)
+    throw InvalidMeshError(source, std::to_string(n) + " vertices with area: too few for " +
+                                       std::to_string(options.eigenvalues) + " Laplace-Beltrami eigenvalues");
   ShapeDna result;
   result.area = surface_area(mesh);
   // With the mass matrix divided by the area the eigenvalues are lambda x
@@ -82,8 +83,8 @@ ShapeDna shape_dna(const Mesh& mesh, const ShapeDnaOptions& options) {
   // a multiple eigenvalue at the end of the range may come out with too few
   // copies: a few more eigenvalues than kept make the kept range whole.
   const int margin = options.margin >= 0 ? options.margin : std::max(10, options.eigenvalues / 5);
-  const Eigen::Index computed = std::min<Eigen::Index>(wanted + margin, mesh.num_vertices() - 1);
-  const Eigen::Index subspace = std::min<Eigen::Index>(mesh.num_vertices(), std::max<Eigen::Index>(2 * computed + 1, 20));
+  const Eigen::Index computed = std::min<Eigen::Index>(wanted + margin, n - 1);
+  const Eigen::Index subspace = std::min<Eigen::Index>(n, std::max<Eigen::Index>(2 * computed + 1, 20));
   ShiftedSolve op(operators.stiffness, operators.mass, source);
   MassProduct mass_op(operators.mass);
   Spectra::SymGEigsShiftSolver<ShiftedSolve, MassProduct, Spectra::GEigsMode::ShiftInvert>

@@ -52,9 +52,12 @@ struct ShapeDna {
 /// The Shape-DNA of `mesh` (one connected surface; with several components
 /// each adds a zero eigenvalue). Meshes with boundary get their Neumann
 /// spectrum. Throws InvalidArgument for options.eigenvalues < 1 or a shift
-/// not negative, InvalidMeshError naming mesh.source for a degenerate mesh
-/// (see laplace_beltrami: triangles of zero area are left out), one with at most eigenvalues + 1 vertices, or
-/// one on which the iterations do not converge.
+/// not negative, InvalidMeshError naming mesh.source for a mesh without a
+/// triangle of nonzero area, one with at most eigenvalues + 1 vertices on
+/// such triangles (see laplace_beltrami: triangles of zero area and the
+/// vertices on them only are left out, so every mesh the reader accepts has
+/// a spectrum when it is large enough), or one on which the iterations do
+/// not converge.
 ShapeDna shape_dna(const Mesh& mesh, const ShapeDnaOptions& options = {});
 
 /// The distance between two Shape-DNAs: the Euclidean distance of the
