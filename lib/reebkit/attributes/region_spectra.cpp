@@ -96,7 +96,16 @@ SurfaceSpectra surface_spectra(const Mesh& mesh, const std::vector<Index>& verte
 
   // The coarse copy: the surface decimated to about coarse_vertices.
   const double ratio = std::min(1.0, static_cast<double>(options.coarse_vertices) / static_cast<double>(mesh.num_vertices()));
-  const auto coarsened = [ratio](const Mesh& m) { return ratio < 1.0 ? decimate_mesh(m, {ratio, 0.05}).mesh : m; };
+  // (A piece whose decimation leaves a triangle it cannot repair is used as
+  // it is: slower, not wrong.)
+  const auto coarsened = [ratio](const Mesh& m) {
+    if (ratio >= 1.0) return m;
+    try {
+      return decimate_mesh(m, {ratio, 0.05}).mesh;
+    } catch (const InvalidMeshError&) {
+      return m;
+    }
+  };
   const Mesh coarse = coarsened(mesh);
 
   SurfaceSpectra out;
@@ -107,7 +116,7 @@ SurfaceSpectra surface_spectra(const Mesh& mesh, const std::vector<Index>& verte
   try {
     squash(shape_dna(coarse, global), kGlobalSpectrumLength, out.global.data());
   } catch (const InvalidMeshError&) {
-    // The decimation left a degenerate corner the operator cannot take: the
+    // The coarse copy the operator or the iterations could not take: the
     // surface as given.
     if (coarse.num_vertices() == mesh.num_vertices()) throw;
     squash(shape_dna(mesh, global), kGlobalSpectrumLength, out.global.data());
