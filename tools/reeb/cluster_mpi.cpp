@@ -7,6 +7,7 @@
 #include "reebkit/collection/shard_merge.h"
 #include "reebkit/core/error.h"
 #include "reebkit/core/timer.h"
+#include "reebkit/io/file_bytes.h"
 #include "reebkit/io/file_lock.h"
 
 #include <mpi.h>
@@ -263,9 +264,10 @@ void print_shares(const char* what, const std::vector<double>& shares) {
 
 std::optional<ExtractionSummary> extract_collection_on_cluster(const std::vector<MeshInput>& inputs,
                                                                const std::vector<PsbClass>& classes,
-                                                               const std::filesystem::path& output,
+                                                               const std::filesystem::path& requested,
                                                                const ExtractionOptions& options) {
   Timer clock;
+  const std::filesystem::path output = resolved_output(requested);  // a link: its file is locked and replaced
   check_extraction(inputs, classes, output, options);  // every process: the same verdict, before MPI starts
   MpiJob mpi;
   // Process 0 holds the lock and plans; a refusal (locked, other analysis

@@ -142,7 +142,7 @@ int run_eval(const std::vector<std::string>& args) {
   int scaling_k = 0;
   options.add_options()
       ("matrix", po::value(&matrix_path)->required(),
-       "distance matrix: PSB binary .matrix (float32 N x N) or SHREC ASCII (any other extension)")
+       "distance matrix: PSB binary (float32 N x N) or SHREC ASCII, told apart by the contents")
       ("cla", po::value(&cla_path)->required(), "classes of the models, PSB .cla (rows in its model order)")
       ("output,o", po::value(&out_dir)->required(), "report folder: report.md, pr.csv, pr.png, pr.svg")
       ("name", po::value(&name), "name of the method in the report (default: the matrix file name)")

@@ -7,8 +7,8 @@
 // (deform/pose.h, mesh/decimation.h, mesh/remeshing.h, mesh/resampling.h,
 // mesh/transform.h).
 #include "reeb/cli.h"
-#include "reebkit/core/error.h"
 #include "reebkit/deform/pose.h"
+#include "reebkit/io/file_bytes.h"
 #include "reebkit/io/mesh_io.h"
 #include "reebkit/mesh/decimation.h"
 #include "reebkit/mesh/remeshing.h"
@@ -16,7 +16,6 @@
 #include "reebkit/mesh/transform.h"
 
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -96,6 +95,8 @@ int run_perturb(const std::vector<std::string>& args) {
   if (!(scale > 0.0 && std::isfinite(scale))) throw po::error("--scale must be a finite number > 0");
   if (!(noise >= 0.0 && std::isfinite(noise))) throw po::error("--noise must be a finite number >= 0");
   if (subdivide < 0) throw po::error("--subdivide must be >= 0");
+  if (correspondence_path.empty()) correspondence_path = std::filesystem::path(out_path).replace_extension(".corr").string();
+  check_outputs({out_path, correspondence_path}, {mesh_path});
   Similarity similarity;
   similarity.scale = scale;
   if (!rotate.empty()) similarity.rotation = parse_rotation(rotate, seed);
@@ -140,13 +141,11 @@ int run_perturb(const std::vector<std::string>& args) {
   mesh = transformed(mesh, similarity);
 
   write_mesh(out_path, mesh);
-  if (correspondence_path.empty()) correspondence_path = std::filesystem::path(out_path).replace_extension(".corr").string();
-  std::ofstream out(correspondence_path);
+  std::ostringstream out;
   out << "# reeb perturb correspondence: line v (0-based, after this header) = the vertex of " << mesh_path
       << "\n# (its numbering in the file) that vertex v of " << out_path << " stands for\n";
   for (const Index v : correspondence) out << original.source_index(v) << "\n";
-  out.close();
-  if (!out) throw Error(correspondence_path + ": cannot write the correspondence file");
+  write_file_bytes(correspondence_path, out.str());
   std::cout << "wrote " << out_path << " (" << mesh.num_vertices() << " vertices, " << mesh.num_triangles()
             << " triangles) and " << correspondence_path << "\n";
   return 0;

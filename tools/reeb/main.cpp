@@ -1,8 +1,10 @@
 // reeb: invariant high-level Reeb graphs of 3D meshes, from the command line.
 #include "reeb/cli.h"
+#include "reeb/cluster.h"
 #include "reebkit/core/error.h"
 
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -43,6 +45,10 @@ void print_usage() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Past a file-size limit (ulimit -f), a write fails with EFBIG, reported
+  // and cleaned up as any write error, instead of the signal killing the
+  // process without a word and leaving its partial output and lock.
+  std::signal(SIGXFSZ, SIG_IGN);
   if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
     print_usage();
     return argc < 2 ? 2 : 0;
@@ -62,7 +68,9 @@ int main(int argc, char** argv) {
         throw reebkit::Error(std::string("standard output: write failed: ") + std::strerror(errno));
       return status;
     } catch (const boost::program_options::error& e) {
-      std::cerr << "reeb " << c.name << ": " << e.what() << " (see reeb " << c.name << " --help)\n";
+      // Every process of an MPI job parses the same command line: one says what is wrong with it.
+      if (reebkit::cli::launched_rank() == 0)
+        std::cerr << "reeb " << c.name << ": " << e.what() << " (see reeb " << c.name << " --help)\n";
       return 2;
     } catch (const std::exception& e) {
       std::cerr << "reeb " << c.name << ": error: " << e.what() << "\n";

@@ -18,7 +18,9 @@
 #include <mutex>
 #include <optional>
 #include <sstream>
+#include <type_traits>
 #include <unordered_map>
+#include <variant>
 
 namespace reebkit {
 namespace {
@@ -227,6 +229,8 @@ void check_extraction(const std::vector<MeshInput>& inputs, const std::vector<Ps
   if (!(options.checkpoint_seconds >= 0))
     throw InvalidArgument("extract_collection: checkpoint_seconds must be >= 0");
   if (!options.analysis.reeb_graph) throw InvalidArgument("extract_collection: the analysis must build the Reeb graph");
+  if (inputs.empty())
+    throw InvalidArgument(output.string() + ": no mesh to index (the inputs hold no .off .obj .ply or .stl file)");
   check_analysis_options(options.analysis);
   std::vector<std::filesystem::path> input_files;
   for (const MeshInput& input : inputs) input_files.push_back(input.path);
@@ -259,23 +263,19 @@ std::string analysis_options_json(const AnalysisOptions& options) {
   std::ostringstream text;
   JsonWriter json(text);
   json.begin_object();
-  json.key("holes").begin_object().field("max_loop_length", options.holes.max_loop_length).end_object();
-  json.key("features")
-      .begin_object()
-      .field("epsilon", options.features.epsilon)
-      .field("start_vertex", static_cast<long long>(options.features.start_vertex))
-      .field("max_extra_sweeps", options.features.max_extra_sweeps)
-      .field("extra_seeds", options.features.extra_seeds)
-      .field("geodesic", geodesic_name(options.features.geodesic))
-      .field("min_persistence", options.features.min_persistence)
-      .end_object();
-  json.key("reeb")
-      .begin_object()
-      .field("level_lines", level_lines_name(options.reeb.level_lines))
-      .field("all_components", options.reeb.all_components)
-      .field("skeleton_levels", static_cast<long long>(options.reeb.skeleton_levels))
-      .end_object();
-  json.field("reeb_graph", options.reeb_graph).end_object();
+  // The table's options by their names (analysis_options.h), then the two it leaves out.
+  for (const NamedOption& option : named_analysis_options(options)) {
+    json.key(option.name);
+    std::visit(
+        [&json](const auto& value) {
+          if constexpr (std::is_same_v<std::decay_t<decltype(value)>, std::int64_t>)
+            json.value(static_cast<long long>(value));
+          else
+            json.value(value);
+        },
+        option.value);
+  }
+  json.field("all_components", options.reeb.all_components).field("reeb_graph", options.reeb_graph).end_object();
   // One line for the file attribute: drop the writer's line breaks and indentation.
   std::string compact;
   bool indent = false;
@@ -287,7 +287,8 @@ std::string analysis_options_json(const AnalysisOptions& options) {
 }
 
 ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const std::vector<PsbClass>& classes,
-                                     const std::filesystem::path& output, const ExtractionOptions& options) {
+                                     const std::filesystem::path& requested, const ExtractionOptions& options) {
+  const std::filesystem::path output = resolved_output(requested);  // a link: its file is locked and replaced
   check_extraction(inputs, classes, output, options);
   const FileLock lock(output);
   // A new collection is written into OUTPUT.partial, renamed over OUTPUT at
