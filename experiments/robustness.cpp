@@ -432,21 +432,8 @@ void timing(const fs::path& out, const fs::path& path, const std::vector<Index>&
 
 }  // namespace
 
-/// Sets the analysis option NAME of `text` "NAME=VALUE" in base_options,
-/// VALUE read as the option's kind (integer, number or text).
-void set_base_option(const std::string& text) {
-  const std::size_t eq = text.find('=');
-  const std::string name = text.substr(0, eq);
-  const auto& fields = analysis_option_fields();
-  const auto f = std::find_if(fields.begin(), fields.end(), [&](const AnalysisOptionField& field) { return field.name == name; });
-  if (eq == std::string::npos || f == fields.end()) throw InvalidArgument("--option " + text + ": expected NAME=VALUE, NAME an analysis option");
-  const std::string value = text.substr(eq + 1);
-  const OptionValue kind = f->get(base_options);
-  if (std::holds_alternative<std::int64_t>(kind)) f->set(base_options, static_cast<std::int64_t>(std::stoll(value)));
-  else if (std::holds_alternative<double>(kind)) f->set(base_options, std::stod(value));
-  else f->set(base_options, value);
-  check_analysis_options(base_options);
-}
+/// Sets the analysis option of `text` "NAME=VALUE" in base_options.
+void set_base_option(const std::string& text) { set_option_text(analysis_option_fields(), base_options, text); }
 
 int main(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);

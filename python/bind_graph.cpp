@@ -179,9 +179,11 @@ void bind_graph(py::module_& m) {
   m.attr("EDGE_ATTRIBUTES") = names(kEdgeAttributeNames);
   m.attr("SIGNATURE") = names(kSignatureNames);
 
-  py::class_<MatchingOptions> matching_options(m, "MatchingOptions",
-                              "The cost model of graph matching (matching/graph_matching.h, docs/method.md); "
-                              "the defaults are the library's, as `reeb match --help` shows them.")
+  py::class_<MatchingOptions> matching_options(
+      m, "MatchingOptions",
+      "The cost model of graph matching (matching/graph_matching.h, docs/method.md); the defaults are the "
+      "library's, as `reeb match --help` shows them; each option is checked against its range when set.");
+  matching_options
       .def(py::init([](const py::kwargs& kwargs) {
              MatchingOptions options;
              for (const auto& [key, value] : kwargs) {

@@ -59,8 +59,11 @@ TEST(MatchingOptions, TheTableHasARowPerFieldEachSettingItsOwnField) {
                                   : OptionValue(std::get<std::int64_t>(value) + 1);
     field.set(options, other);
     EXPECT_EQ(field.get(options), other) << field.name;
-    for (const MatchingOptionField& row : fields)
-      if (row.name != field.name) EXPECT_EQ(row.get(options), row.get(MatchingOptions{})) << field.name << " sets " << row.name;
+    for (const MatchingOptionField& row : fields) {
+      if (row.name != field.name) {
+        EXPECT_EQ(row.get(options), row.get(MatchingOptions{})) << field.name << " sets " << row.name;
+      }
+    }
   }
   EXPECT_EQ(fields.size(), field_count<MatchingOptions>()) << "a field of MatchingOptions has no row";
 }
@@ -70,7 +73,7 @@ TEST(MatchingOptions, AValueOutOfItsRangeIsRefusedNamingTheOption) {
   const GraphRecord a = make_graph_record(analysis, compute_attributes(analysis));
   for (const MatchingOptionField& field : matching_option_fields()) {
     const bool number = std::holds_alternative<double>(field.get(MatchingOptions{}));
-    for (const OptionValue bad : {number ? OptionValue(-1.0) : OptionValue(std::int64_t{-1}),
+    for (const OptionValue& bad : {number ? OptionValue(-1.0) : OptionValue(std::int64_t{-1}),
                                   number ? OptionValue(std::numeric_limits<double>::quiet_NaN()) : OptionValue(std::int64_t{-1})}) {
       MatchingOptions options;
       field.set(options, bad);
@@ -85,6 +88,20 @@ TEST(MatchingOptions, AValueOutOfItsRangeIsRefusedNamingTheOption) {
     if (std::holds_alternative<double>(field.get(zero_cost_terms)) && field.range.holds(0.0))
       field.set(zero_cost_terms, 0.0);
   EXPECT_GE(match_graphs(a, a, zero_cost_terms).distance, 0.0);
+}
+
+TEST(MatchingOptions, NameEqualsValueSetsAnOptionByTheTable) {
+  MatchingOptions options;
+  set_option_text(matching_option_fields(), options, "unmatched_cost=2.5");
+  set_option_text(matching_option_fields(), options, "refine_rounds=3");
+  EXPECT_EQ(options.unmatched_cost, 2.5);
+  EXPECT_EQ(options.refine_rounds, 3);
+  for (const char* bad : {"unmatched_cost", "no_such=1", "refine_rounds=1.5", "edge_weight=-1", "edge_weight=x"}) {
+    const std::string message =
+        thrown_message<InvalidArgument>([&] { set_option_text(matching_option_fields(), options, bad); });
+    EXPECT_EQ(message.rfind(std::string(bad) + ": ", 0), 0u) << message;
+  }
+  EXPECT_EQ(options.unmatched_cost, 2.5);
 }
 
 }  // namespace

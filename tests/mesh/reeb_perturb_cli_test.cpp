@@ -102,7 +102,7 @@ TEST(ReebPerturbCli, OutputsAreCheckedBeforeAnyWork) {
   std::filesystem::copy_file(embedded_dataset_dir() / "cactus.off", dir / "m.off");
   const std::string mesh = read_file_bytes(dir / "m.off");
   const std::string perturb = std::string(REEB_BINARY) + " perturb " + shell_quoted(dir / "m.off") + " --scale 2 ";
-  for (const std::string outputs : {"-o " + shell_quoted(dir / "m.off"),
+  for (const std::string& outputs : {"-o " + shell_quoted(dir / "m.off"),
                                     "-o " + shell_quoted(dir / "v.off") + " --correspondence " + shell_quoted(dir / "m.off"),
                                     "-o " + shell_quoted(dir / "v.off") + " --correspondence " + shell_quoted(dir / "v.off")}) {
     const auto [status, out] = run_command(perturb + outputs + " 2>&1");

@@ -1,5 +1,6 @@
 #include "reeb/cli.h"
 
+#include "reebkit/core/error.h"
 #include "reebkit/core/option_table.h"
 #include "reebkit/core/timer.h"
 #include "reebkit/io/file_bytes.h"
@@ -63,7 +64,9 @@ bool parse(const std::vector<std::string>& args, const std::string& usage,
   }
   for (const auto& [name, value] : vm) {
     const auto* text = boost::any_cast<std::string>(&value.value());
-    if (text && text->empty() && !value.defaulted()) throw po::error("the option '--" + name + "' is given an empty value");
+    const po::option_description* option = all.find_nothrow(name, false);
+    if (text && text->empty() && !value.defaulted() && option && option->semantic()->min_tokens() > 0)
+      throw po::error("the option '--" + name + "' is given an empty value");
   }
   try {
     po::notify(vm);
@@ -100,6 +103,15 @@ std::vector<std::string> given_analysis_options(const po::variables_map& vm) {
     if (it != vm.end() && !it->second.defaulted()) given.push_back(field.name);
   }
   return given;
+}
+
+std::filesystem::path output_folder(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::exists(path, error) && !std::filesystem::is_directory(path, error))
+    throw Error(path + ": is a file, not a folder (-o names the folder of the outputs)");
+  std::filesystem::create_directories(path, error);
+  if (error) throw Error(path + ": cannot create the folder: " + error.message());
+  return path;
 }
 
 void add_components_option(po::options_description& options, bool& all_components) {

@@ -7,6 +7,7 @@
 
 #include <boost/program_options.hpp>
 
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
@@ -51,6 +52,11 @@ std::vector<std::string> given_analysis_options(const po::variables_map& vm);
 /// one's folder exists and is writable, it is none of `inputs`, no two name
 /// one file), before any work.
 void check_outputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs);
+
+/// The output folder `path` (-o of eval and variants), created with its
+/// parents when missing, before any work. Throws Error naming `path` when
+/// it is a file or cannot be created.
+std::filesystem::path output_folder(const std::string& path);
 
 /// --all-components: every connected component, not the largest only.
 void add_components_option(po::options_description& options, bool& all_components);

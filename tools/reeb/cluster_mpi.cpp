@@ -241,12 +241,11 @@ class Stopwatch {
  public:
   /// `count` things done since construction: {count, wall s, CPU s}.
   std::vector<double> share(std::int64_t count) const {
-    return {static_cast<double>(count), std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_).count(),
-            static_cast<double>(std::clock() - cpu_) / CLOCKS_PER_SEC};
+    return {static_cast<double>(count), wall_.elapsed() / 1000, static_cast<double>(std::clock() - cpu_) / CLOCKS_PER_SEC};
   }
 
  private:
-  std::chrono::steady_clock::time_point wall_ = std::chrono::steady_clock::now();
+  Timer wall_;
   std::clock_t cpu_ = std::clock();
 };
 

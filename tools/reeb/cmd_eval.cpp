@@ -159,6 +159,7 @@ int run_eval(const std::vector<std::string>& args) {
              options, positional, vm))
     return 0;
 
+  const std::filesystem::path dir = output_folder(out_dir);
   const ModelClasses classes = model_classes(read_psb_classes(cla_path));
   std::vector<Method> methods{method_of(matrix_path)};
   if (!name.empty()) methods.front().name = name;
@@ -178,8 +179,6 @@ int run_eval(const std::vector<std::string>& args) {
   }
   methods.insert(methods.end(), scaled.begin(), scaled.end());
 
-  const std::filesystem::path dir(out_dir);
-  std::filesystem::create_directories(dir);
   write_file_bytes(dir / "pr.csv", pr_csv(methods));
   write_file_bytes(dir / "report.md", report(methods, cla_path));
   if (!no_plot) plot(dir / "pr.csv", dir);

@@ -70,8 +70,7 @@ int run_variants(const std::vector<std::string>& args) {
 
   const std::vector<MeshInput> meshes = list_mesh_inputs(inputs);
   const std::vector<std::string> names = output_names(meshes);
-  const std::filesystem::path dir(out_dir);
-  std::filesystem::create_directories(dir);
+  const std::filesystem::path dir = output_folder(out_dir);
   std::vector<std::pair<std::string, std::vector<std::string>>> classes;
   for (std::size_t i = 0; i < meshes.size(); ++i) {
     const std::string& name = names[i];

@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <iostream>
@@ -74,7 +75,13 @@ int main(int argc, char** argv) {
       return 2;
     } catch (const std::exception& e) {
       std::cerr << "reeb " << c.name << ": error: " << e.what() << "\n";
-      return 1;
+      // Leave without the libraries' exit handlers: HDF5 1.10 crashes in
+      // them on a file it failed to close after a write error (a full disk
+      // while the file was being created), which CollectionWriter lets go
+      // of. Every output is closed or abandoned by now.
+      std::cout.flush();
+      std::fflush(nullptr);
+      std::_Exit(1);
     }
   }
   std::cerr << "reeb: unknown command '" << argv[1] << "'\n";

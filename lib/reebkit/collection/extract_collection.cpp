@@ -25,17 +25,6 @@
 namespace reebkit {
 namespace {
 
-/// Milliseconds since construction.
-class Stopwatch {
- public:
-  double elapsed() const {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count();
-  }
-
- private:
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-};
-
 /// The entry of one mesh; any exception becomes a failed entry.
 GraphRecord compute_entry(const MeshInput& input, std::uint64_t hash, const std::string& class_label,
                           const AnalysisOptions& options) {
@@ -53,7 +42,7 @@ GraphRecord compute_entry(const MeshInput& input, std::uint64_t hash, const std:
 class EntrySink {
  public:
   EntrySink(CollectionWriter& writer, const ExtractionOptions& options, ExtractionSummary& summary,
-            ProgressState& progress, const Stopwatch& clock)
+            ProgressState& progress, const Timer& clock)
       : writer_(writer), options_(options), summary_(summary), progress_(progress), clock_(clock) {}
 
   void write(GraphRecord entry) {
@@ -90,7 +79,7 @@ class EntrySink {
   const ExtractionOptions& options_;
   ExtractionSummary& summary_;
   ProgressState& progress_;
-  const Stopwatch& clock_;
+  const Timer& clock_;
   int since_checkpoint_ = 0;
   double last_checkpoint_ = 0;
 };
@@ -311,7 +300,7 @@ ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const
       provenance.classes_file = indexed.classes_file;
     }
   }
-  const Stopwatch clock;
+  const Timer clock;
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
   ExtractionSummary summary;
   ProgressState progress;
@@ -410,7 +399,7 @@ ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const
 ExtractionSummary extract_shard(const std::vector<MeshInput>& inputs, const std::vector<PsbClass>& classes,
                                 const std::filesystem::path& shard, const InputClaim& claim,
                                 const ExtractionOptions& options) {
-  const Stopwatch clock;
+  const Timer clock;
   ExtractionSummary summary;
   ProgressState progress;
   progress.total = static_cast<std::int64_t>(inputs.size());

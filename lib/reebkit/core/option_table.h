@@ -133,6 +133,29 @@ std::vector<NamedOption> named_options(const std::vector<OptionField<Options>>& 
   return out;
 }
 
+/// Sets the option of `assignment` "NAME=VALUE", VALUE read as the option's
+/// kind (option_value_from_text), and checks its range. Throws
+/// InvalidArgument naming `assignment` for no '=', an unknown NAME, a VALUE
+/// of another kind or out of the option's range (`options` unchanged then).
+template <typename Options>
+void set_option_text(const std::vector<OptionField<Options>>& fields, Options& options, const std::string& assignment) {
+  const std::size_t eq = assignment.find('=');
+  const std::string name = assignment.substr(0, eq);
+  const OptionField<Options>* field = nullptr;
+  for (const OptionField<Options>& f : fields)
+    if (f.name == name) field = &f;
+  if (eq == std::string::npos || !field)
+    throw InvalidArgument(assignment + ": expected NAME=VALUE, NAME one of the options");
+  try {
+    Options changed = options;  // left as it was on an error
+    field->set(changed, option_value_from_text(field->get(options), assignment.substr(eq + 1)));
+    field->check(changed);
+    options = changed;
+  } catch (const InvalidArgument& e) {
+    throw InvalidArgument(assignment + ": " + e.what());
+  }
+}
+
 /// The row named `name`, or nullptr.
 template <typename Options>
 const OptionField<Options>* find_option(const std::vector<OptionField<Options>>& fields, const std::string& name) {

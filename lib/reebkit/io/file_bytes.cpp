@@ -148,8 +148,15 @@ void check_output_files(const std::vector<fs::path>& outputs, const std::vector<
 fs::path resolved_output(const fs::path& path) {
   std::error_code ec;
   if (!fs::is_symlink(path, ec)) return path;
-  const fs::path target = fs::weakly_canonical(path, ec);
-  return ec ? path : target;
+  // Followed link by link: a link to a file not created yet is resolved too.
+  fs::path target = path;
+  for (int hops = 0; hops < 40 && fs::is_symlink(target, ec); ++hops) {
+    const fs::path next = fs::read_symlink(target, ec);
+    if (ec) return path;
+    target = next.is_absolute() ? next : folder_of(target) / next;
+  }
+  const fs::path resolved = fs::weakly_canonical(target, ec);
+  return ec ? path : resolved;
 }
 
 }  // namespace reebkit
