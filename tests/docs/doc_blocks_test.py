@@ -79,11 +79,15 @@ def check_usage(reeb, text):
     return problems
 
 
-def check_option_lists(source, reeb):
+def check_option_lists(source, reeb, python):
     """Problems of the docs' lists of options against the command line's."""
     problems = []
     command_line = (source / "docs" / "command-line.md").read_text()
     every = set()
+    for script in sorted((source / "tools" / "figures").glob("*.py")):  # the figure scripts it documents too
+        if script.name in command_line:
+            every |= set(FLAG.findall(subprocess.run([python, str(script), "--help"], capture_output=True,
+                                                     text=True, check=True).stdout))
     for command in ("features", "graph", "deform", "index", "info", "export", "match", "eval", "query",
                     "distances", "variants", "perturb"):
         every |= help_flags(reeb, command)
@@ -141,7 +145,7 @@ def main():
                 print(f"run   {where} ({language}): exit {result.returncode}")
                 if result.returncode != 0:
                     failures.append(f"{where}: exit {result.returncode}\n{result.stdout[-3000:]}{result.stderr[-3000:]}")
-    problems = check_option_lists(source, reeb)
+    problems = check_option_lists(source, reeb, python)
     failures += problems
     for failure in failures:
         print(f"FAILED {failure}")
