@@ -19,6 +19,7 @@
 #include "reebkit/collection/mesh_inputs.h"
 #include "reebkit/core/error.h"
 #include "reebkit/core/timer.h"
+#include "reebkit/deform/perturbation.h"
 #include "reebkit/deform/pose.h"
 #include "reebkit/geodesic/fast_marching.h"
 #include "reebkit/io/psb_classes.h"
@@ -108,38 +109,35 @@ std::vector<Index> sorted(std::vector<Index> v) {
 }
 
 /// One perturbation of the sampling section: its kind and strength.
-struct Perturbation {
+struct SamplingPerturbation {
   std::string kind;
   double strength = 0;
 };
 
-const std::vector<Perturbation>& perturbations() {
-  static const std::vector<Perturbation> all = {
+const std::vector<SamplingPerturbation>& perturbations() {
+  static const std::vector<SamplingPerturbation> all = {
       {"decimate", 0.75}, {"decimate", 0.5},    {"decimate", 0.25}, {"remesh", 0.5},   {"remesh", 1.0},
       {"remesh", 2.0},    {"subdivide", 1},     {"noise", 0.001},   {"noise", 0.0025}, {"noise", 0.005},
       {"noise", 0.01},    {"pose", 1},          {"pose", 2}};
   return all;
 }
 
-/// The perturbation applied to `mesh` (the pose is planned on `analysis`, the analysis of `mesh`).
-MeshVariant perturb(const Mesh& mesh, const MeshAnalysis& analysis, const Perturbation& p) {
-  if (p.kind == "decimate") return decimate_mesh(mesh, DecimationOptions{p.strength, 0.02});
-  if (p.kind == "remesh") {
-    RemeshOptions options;
-    options.target_vertices = static_cast<Index>(std::lround(p.strength * mesh.num_vertices()));
-    return remesh(mesh, options);
-  }
-  if (p.kind == "subdivide") return subdivide_mesh(mesh, static_cast<int>(p.strength));
-  if (p.kind == "noise") return same_vertices(add_normal_noise(mesh, NoiseOptions{p.strength, 1, NoiseShape::Gaussian}));
-  PoseOptions options;
-  options.seed = static_cast<std::uint64_t>(p.strength);
-  return same_vertices(original_surface(random_pose(analysis, options).mesh));
+/// The perturbation applied to `mesh` (perturb_mesh; the pose is planned on
+/// `analysis`, the analysis of `mesh`; remesh's strength is the vertex count
+/// as a share of the mesh's).
+MeshVariant perturb(const Mesh& mesh, const MeshAnalysis& analysis, const SamplingPerturbation& p) {
+  using K = PerturbationKind;
+  const K kind = p.kind == "decimate" ? K::Decimate : p.kind == "remesh" ? K::Remesh
+                 : p.kind == "subdivide" ? K::Subdivide : p.kind == "noise" ? K::Noise : K::Pose;
+  reebkit::Perturbation step{kind, p.strength, {}, kind == K::Pose ? static_cast<std::uint64_t>(p.strength) : 1};
+  step.remesh.target_vertices = static_cast<Index>(std::lround(p.strength * mesh.num_vertices()));
+  return perturb_mesh(mesh, step, &analysis);
 }
 
 struct VariantRow {
   std::string mesh;
   Geodesic method = Geodesic::Dijkstra;
-  Perturbation perturbation;
+  SamplingPerturbation perturbation;
   Index vertices = 0, variant_vertices = 0;
   std::size_t features = 0, variant_features = 0;
   double forward = 0, backward = 0;
@@ -160,7 +158,7 @@ std::vector<VariantRow> sample_mesh(const std::string& name, const Mesh& mesh, s
   std::vector<VariantRow> rows;
   // Each variant is made once (the pose planned on the Dijkstra analysis,
   // the default) and analysed with both methods.
-  for (const Perturbation& p : perturbations()) {
+  for (const SamplingPerturbation& p : perturbations()) {
     Timer timer;
     MeshVariant variant;
     std::string error;

@@ -3,16 +3,14 @@
 // translation and scale, robustness to pose and to sampling), and the
 // correspondence of its vertices to the original's. The steps given run in
 // this order: pose, decimation, remeshing, subdivision, noise, then the
-// similarity (rotation, scale, translation). Each is a library function
-// (deform/pose.h, mesh/decimation.h, mesh/remeshing.h, mesh/resampling.h,
-// mesh/transform.h).
+// similarity (rotation, scale, translation). Each step is perturb_mesh
+// (deform/perturbation.h, as experiments/robustness.cpp applies them), the
+// similarity mesh/transform.h.
 #include "reeb/cli.h"
-#include "reebkit/deform/pose.h"
+#include "reebkit/deform/perturbation.h"
 #include "reebkit/io/file_bytes.h"
 #include "reebkit/io/mesh_io.h"
-#include "reebkit/mesh/decimation.h"
 #include "reebkit/mesh/remeshing.h"
-#include "reebkit/mesh/resampling.h"
 #include "reebkit/mesh/transform.h"
 
 #include <cmath>
@@ -118,26 +116,26 @@ int run_perturb(const std::vector<std::string>& args) {
   const Mesh original = std::move(load_for_command(mesh_path, false).cleaned.components.front());
   Mesh mesh = original;
   std::vector<Index> correspondence = same_vertices(original).original_vertex;
-  if (vm.count("pose")) {
-    const MeshAnalysis analysis = analyze_mesh(original);
-    PoseOptions pose_options;
-    pose_options.seed = pose_seed;
-    const RandomPose pose = random_pose(analysis, pose_options);
-    for (const std::string& why : pose.skipped) std::cerr << "warning: " << mesh_path << ": " << why << "\n";
-    mesh = original_surface(pose.mesh);  // without the vertices the analysis added to fill small holes
-    std::cout << "pose: " << pose.turns.size() << " leaf component(s) turned by";
-    for (const Deformation& turn : pose.turns) std::cout << " " << turn.angle_degrees;
-    std::cout << " degrees\n";
-  }
-  const auto step = [&](const char* what, MeshVariant variant) {
+  const auto step = [&](const char* what, const Perturbation& p, const MeshAnalysis* analysis = nullptr) {
+    std::vector<std::string> notes;
+    MeshVariant variant = perturb_mesh(mesh, p, analysis, &notes);
     compose(correspondence, variant.original_vertex);
-    std::cout << what << ": " << mesh.num_vertices() << " -> " << variant.mesh.num_vertices() << " vertices\n";
+    if (p.kind == PerturbationKind::Pose) {  // the skipped leaves, then the turns
+      for (std::size_t k = 0; k + 1 < notes.size(); ++k) std::cerr << "warning: " << mesh_path << ": " << notes[k] << "\n";
+      std::cout << what << ": " << notes.back() << "\n";
+    } else {
+      std::cout << what << ": " << mesh.num_vertices() << " -> " << variant.mesh.num_vertices() << " vertices\n";
+    }
     mesh = std::move(variant.mesh);
   };
-  if (decimate != 1.0) step("decimate", decimate_mesh(mesh, DecimationOptions{decimate, 0.02}));
-  if (!remesh_text.empty()) step("remesh", remesh(mesh, remesh_options));
-  if (subdivide > 0) step("subdivide", subdivide_mesh(mesh, subdivide));
-  if (noise > 0.0) mesh = add_normal_noise(mesh, NoiseOptions{noise, seed, NoiseShape::Gaussian});
+  if (vm.count("pose")) {
+    const MeshAnalysis analysis = analyze_mesh(original);
+    step("pose", Perturbation{PerturbationKind::Pose, 0, {}, pose_seed}, &analysis);
+  }
+  if (decimate != 1.0) step("decimate", Perturbation{PerturbationKind::Decimate, decimate, {}, seed});
+  if (!remesh_text.empty()) step("remesh", Perturbation{PerturbationKind::Remesh, 0, remesh_options, seed});
+  if (subdivide > 0) step("subdivide", Perturbation{PerturbationKind::Subdivide, static_cast<double>(subdivide), {}, seed});
+  if (noise > 0.0) step("noise", Perturbation{PerturbationKind::Noise, noise, {}, seed});
   mesh = transformed(mesh, similarity);
 
   write_mesh(out_path, mesh);
