@@ -23,6 +23,7 @@
 #include "reebkit/deform/pose.h"
 #include "reebkit/geodesic/fast_marching.h"
 #include "reebkit/io/psb_classes.h"
+#include "reebkit/io/vts.h"
 #include "reebkit/matching/graph_matching.h"
 #include "reebkit/mesh/decimation.h"
 #include "reebkit/mesh/load_mesh.h"
@@ -253,18 +254,6 @@ std::vector<std::pair<std::string, fs::path>> shrec_models(const fs::path& dir, 
   return out;
 }
 
-/// Vertex ids of a SHREC07 features/<id>.vts file (first number of each line).
-std::vector<Index> read_vts(const fs::path& path) {
-  std::ifstream in(path);
-  std::vector<Index> ids;
-  std::string line;
-  while (std::getline(in, line)) {
-    long id = 0;
-    double x = 0, y = 0, z = 0;
-    if (std::sscanf(line.c_str(), "%ld %lf %lf %lf", &id, &x, &y, &z) == 4) ids.push_back(static_cast<Index>(id));
-  }
-  return ids;
-}
 
 /// Section 1 (rigid + scale), 4 (classes) and 5 (hand-picked points) on every SHREC07 mesh.
 void rigid(const fs::path& out, const fs::path& dir, const fs::path& cla, int similarities) {
@@ -313,7 +302,7 @@ void rigid(const fs::path& out, const fs::path& dir, const fs::path& cla, int si
       std::map<Index, Index> file_to_mesh;
       for (Index v = 0; v < a.analysis.mesh.num_vertices(); ++v)
         if (a.analysis.mesh.source_index(v) != kInvalidIndex) file_to_mesh[a.analysis.mesh.source_index(v)] = v;
-      for (const Index id : read_vts(vts)) {
+      for (const Index id : fs::exists(vts) ? read_vts(vts) : std::vector<Index>{}) {  // not every model has one
         const auto it = file_to_mesh.find(id);
         if (it != file_to_mesh.end()) hand.push_back(it->second);
       }
