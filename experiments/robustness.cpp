@@ -20,9 +20,11 @@
 #include "reebkit/collection/mesh_inputs.h"
 #include "reebkit/core/error.h"
 #include "reebkit/core/timer.h"
+#include "reebkit/deform/perturbation.h"
 #include "reebkit/deform/pose.h"
 #include "reebkit/geodesic/fast_marching.h"
 #include "reebkit/io/psb_classes.h"
+#include "reebkit/io/vts.h"
 #include "reebkit/matching/graph_matching.h"
 #include "reebkit/mesh/decimation.h"
 #include "reebkit/mesh/load_mesh.h"
@@ -109,38 +111,35 @@ std::vector<Index> sorted(std::vector<Index> v) {
 }
 
 /// One perturbation of the sampling section: its kind and strength.
-struct Perturbation {
+struct SamplingPerturbation {
   std::string kind;
   double strength = 0;
 };
 
-const std::vector<Perturbation>& perturbations() {
-  static const std::vector<Perturbation> all = {
+const std::vector<SamplingPerturbation>& perturbations() {
+  static const std::vector<SamplingPerturbation> all = {
       {"decimate", 0.75}, {"decimate", 0.5},    {"decimate", 0.25}, {"remesh", 0.5},   {"remesh", 1.0},
       {"remesh", 2.0},    {"subdivide", 1},     {"noise", 0.001},   {"noise", 0.0025}, {"noise", 0.005},
       {"noise", 0.01},    {"pose", 1},          {"pose", 2}};
   return all;
 }
 
-/// The perturbation applied to `mesh` (the pose is planned on `analysis`, the analysis of `mesh`).
-MeshVariant perturb(const Mesh& mesh, const MeshAnalysis& analysis, const Perturbation& p) {
-  if (p.kind == "decimate") return decimate_mesh(mesh, DecimationOptions{p.strength, 0.02});
-  if (p.kind == "remesh") {
-    RemeshOptions options;
-    options.target_vertices = static_cast<Index>(std::lround(p.strength * mesh.num_vertices()));
-    return remesh(mesh, options);
-  }
-  if (p.kind == "subdivide") return subdivide_mesh(mesh, static_cast<int>(p.strength));
-  if (p.kind == "noise") return same_vertices(add_normal_noise(mesh, NoiseOptions{p.strength, 1, NoiseShape::Gaussian}));
-  PoseOptions options;
-  options.seed = static_cast<std::uint64_t>(p.strength);
-  return same_vertices(original_surface(random_pose(analysis, options).mesh));
+/// The perturbation applied to `mesh` (perturb_mesh; the pose is planned on
+/// `analysis`, the analysis of `mesh`; remesh's strength is the vertex count
+/// as a share of the mesh's).
+MeshVariant perturb(const Mesh& mesh, const MeshAnalysis& analysis, const SamplingPerturbation& p) {
+  using K = PerturbationKind;
+  const K kind = p.kind == "decimate" ? K::Decimate : p.kind == "remesh" ? K::Remesh
+                 : p.kind == "subdivide" ? K::Subdivide : p.kind == "noise" ? K::Noise : K::Pose;
+  reebkit::Perturbation step{kind, p.strength, {}, kind == K::Pose ? static_cast<std::uint64_t>(p.strength) : 1};
+  step.remesh.target_vertices = static_cast<Index>(std::lround(p.strength * mesh.num_vertices()));
+  return perturb_mesh(mesh, step, &analysis);
 }
 
 struct VariantRow {
   std::string mesh;
   Geodesic method = Geodesic::Dijkstra;
-  Perturbation perturbation;
+  SamplingPerturbation perturbation;
   Index vertices = 0, variant_vertices = 0;
   std::size_t features = 0, variant_features = 0;
   double forward = 0, backward = 0;
@@ -161,7 +160,7 @@ std::vector<VariantRow> sample_mesh(const std::string& name, const Mesh& mesh, s
   std::vector<VariantRow> rows;
   // Each variant is made once (the pose planned on the Dijkstra analysis,
   // the default) and analysed with both methods.
-  for (const Perturbation& p : perturbations()) {
+  for (const SamplingPerturbation& p : perturbations()) {
     Timer timer;
     MeshVariant variant;
     std::string error;
@@ -257,18 +256,6 @@ std::vector<std::pair<std::string, fs::path>> shrec_models(const fs::path& dir, 
   return out;
 }
 
-/// Vertex ids of a SHREC07 features/<id>.vts file (first number of each line).
-std::vector<Index> read_vts(const fs::path& path) {
-  std::ifstream in(path);
-  std::vector<Index> ids;
-  std::string line;
-  while (std::getline(in, line)) {
-    long id = 0;
-    double x = 0, y = 0, z = 0;
-    if (std::sscanf(line.c_str(), "%ld %lf %lf %lf", &id, &x, &y, &z) == 4) ids.push_back(static_cast<Index>(id));
-  }
-  return ids;
-}
 
 /// Section 1 (rigid + scale), 4 (classes) and 5 (hand-picked points) on every SHREC07 mesh.
 int rigid(const fs::path& out, const fs::path& dir, const fs::path& cla, int similarities) {
@@ -320,7 +307,7 @@ int rigid(const fs::path& out, const fs::path& dir, const fs::path& cla, int sim
         std::map<Index, Index> file_to_mesh;
         for (Index v = 0; v < a.analysis.mesh.num_vertices(); ++v)
           if (a.analysis.mesh.source_index(v) != kInvalidIndex) file_to_mesh[a.analysis.mesh.source_index(v)] = v;
-        for (const Index id : read_vts(vts)) {
+        for (const Index id : fs::exists(vts) ? read_vts(vts) : std::vector<Index>{}) {  // not every model has one
           const auto it = file_to_mesh.find(id);
           if (it != file_to_mesh.end()) hand.push_back(it->second);
         }
@@ -457,21 +444,8 @@ void timing(const fs::path& out, const fs::path& path, const std::vector<Index>&
 
 }  // namespace
 
-/// Sets the analysis option NAME of `text` "NAME=VALUE" in base_options,
-/// VALUE read as the option's kind (integer, number or text).
-void set_base_option(const std::string& text) {
-  const std::size_t eq = text.find('=');
-  const std::string name = text.substr(0, eq);
-  const auto& fields = analysis_option_fields();
-  const auto f = std::find_if(fields.begin(), fields.end(), [&](const AnalysisOptionField& field) { return field.name == name; });
-  if (eq == std::string::npos || f == fields.end()) throw InvalidArgument("--option " + text + ": expected NAME=VALUE, NAME an analysis option");
-  const std::string value = text.substr(eq + 1);
-  const OptionValue kind = f->get(base_options);
-  if (std::holds_alternative<std::int64_t>(kind)) f->set(base_options, static_cast<std::int64_t>(std::stoll(value)));
-  else if (std::holds_alternative<double>(kind)) f->set(base_options, std::stod(value));
-  else f->set(base_options, value);
-  check_analysis_options(base_options);
-}
+/// Sets the analysis option of `text` "NAME=VALUE" in base_options.
+void set_base_option(const std::string& text) { set_option_text(analysis_option_fields(), base_options, text); }
 
 int main(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);

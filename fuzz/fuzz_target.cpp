@@ -48,8 +48,8 @@ void read(std::string_view bytes) {
     case Reader::Ply: clean(parse_ply(bytes, "fuzz.ply")); break;
     case Reader::Stl: clean(parse_stl(bytes, "fuzz.stl")); break;
     case Reader::Classes: class_map(read_psb_classes(input_file(bytes, ".cla"))); break;
-    case Reader::PsbMatrix: read_distance_matrix(input_file(bytes, ".matrix")); break;
-    case Reader::ShrecMatrix: read_distance_matrix(input_file(bytes, ".txt")); break;
+    case Reader::PsbMatrix: read_distance_matrix(input_file(bytes, ".matrix")); break;  // either, by content
+    case Reader::ShrecMatrix: read_shrec_matrix(input_file(bytes, ".txt")); break;
     case Reader::Collection: {
       const CollectionReader reader(input_file(bytes, ".h5"));
       if (reader.size() > 0) (void)reader.entries(0, reader.size());

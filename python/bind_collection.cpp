@@ -55,6 +55,19 @@ GraphRecord query_record(const Collection& c, const py::object& query) {
   return analyze_mesh_file(spec, spec, c.analysis);
 }
 
+/// Throws ValueError when `graph` was analysed with other options than the
+/// collection's entries: its distances to them would mean nothing.
+void refuse_other_analysis(const Collection& c, const ArrayGraph& graph) {
+  if (!graph.analysis) return;
+  const std::vector<OptionDifference> differences = analysis_option_differences(*graph.analysis, c.analysis);
+  if (differences.empty()) return;
+  std::string list;
+  for (const OptionDifference& d : differences)
+    list += (list.empty() ? "" : ", ") + d.name + " " + d.first + " (the collection: " + d.second + ")";
+  throw py::value_error("the query graph was analysed with other options than the entries of " + c.path + ": " +
+                        list + "; analyse it with **collection.analysis_options, or query the mesh itself");
+}
+
 py::dict scores(const RetrievalScores& s) {
   py::dict out;
   out["NN"] = s.nearest_neighbor;
@@ -96,10 +109,10 @@ void bind_collection(py::module_& m) {
            py::arg("path"))
       .def("__len__", [](const Collection& c) { return c.reader.size(); })
       .def("__getitem__",
-           [](const Collection& c, std::int64_t i) { return ArrayGraph{c.reader.entry(entry_index(c, i)), {}, {}}; })
+           [](const Collection& c, std::int64_t i) { return ArrayGraph{c.reader.entry(entry_index(c, i)), {}, {}, c.analysis}; })
       .def("__getitem__",
            [](const Collection& c, const std::string& name) {
-             return ArrayGraph{c.reader.entry(entry_index(c, name)), {}, {}};
+             return ArrayGraph{c.reader.entry(entry_index(c, name)), {}, {}, c.analysis};
            })
       .def("__contains__", [](const Collection& c, const std::string& name) { return c.reader.find(name).has_value(); })
       .def(
@@ -111,7 +124,7 @@ void bind_collection(py::module_& m) {
               records = c.reader.entries(0, c.reader.size());
             }
             py::list out;
-            for (GraphRecord& r : records) out.append(ArrayGraph{std::move(r), {}, {}});
+            for (GraphRecord& r : records) out.append(ArrayGraph{std::move(r), {}, {}, c.analysis});
             return out;
           },
           "every entry as a ReebGraph, in collection order (one read per dataset)")
@@ -127,7 +140,7 @@ void bind_collection(py::module_& m) {
             return view_array(s.data(), {static_cast<py::ssize_t>(s.size() / kSignatureLength), kSignatureLength},
                               {kSignatureLength * sizeof(double), sizeof(double)}, self);
           },
-          "(N, 48) float64: every entry's signature (NaN rows for failed entries)")
+          ("(N, " + std::to_string(kSignatureLength) + ") float64: every entry's signature (NaN rows for failed entries)").c_str())
       .def_property_readonly(
           "analysis_options",
           [](const Collection& c) { return options_dict(c.analysis); },
@@ -137,6 +150,7 @@ void bind_collection(py::module_& m) {
           [](Collection& c, const py::object& query, int k, int candidates, int threads,
              const MatchingOptions& matching) {
             const bool graph = py::isinstance<ArrayGraph>(query);
+            if (graph) refuse_other_analysis(c, query.cast<const ArrayGraph&>());
             const GraphRecord computed = graph ? GraphRecord() : query_record(c, query);
             const GraphRecord& record = graph ? query.cast<const ArrayGraph&>().record : computed;
             QueryOptions options;
@@ -172,10 +186,13 @@ void bind_collection(py::module_& m) {
       .def(
           "distances",
           [](const Collection& c, int threads, const MatchingOptions& matching) {
+            const std::vector<std::int64_t> rows = matrix_rows(c.reader);
+            const std::string failed = failed_rows_warning(c.reader, rows);
+            if (!failed.empty()) warn({failed});
             PairwiseDistances d;
             {
               const py::gil_scoped_release release;
-              d = all_pairs_distances(c.reader, matrix_rows(c.reader), AllPairsOptions{threads, matching});
+              d = all_pairs_distances(c.reader, rows, AllPairsOptions{threads, matching});
             }
             const py::ssize_t n = d.size();
             return owning_array(std::move(d.values), {n, n});

@@ -3,6 +3,7 @@
 #include "bindings.h"
 
 #include "reebkit/matching/graph_matching.h"
+#include "reebkit/matching/matching_options.h"
 #include "reebkit/reeb/reeb_graph.h"
 
 #include <pybind11/stl.h>
@@ -10,6 +11,16 @@
 namespace reebkit::python {
 
 namespace {
+
+/// Sets the matching option `field` of `options` to the Python `value`,
+/// which must be of its kind and in its range (InvalidArgument, a
+/// ValueError, otherwise: `options` is left as it was).
+void set_matching_option(const MatchingOptionField& field, MatchingOptions& options, const py::handle& value) {
+  MatchingOptions changed = options;
+  field.set(changed, option_value(field, value));
+  field.check(changed);
+  options = changed;
+}
 
 /// Rows of a row-major table of `columns` values of type T.
 template <typename T>
@@ -168,31 +179,38 @@ void bind_graph(py::module_& m) {
   m.attr("EDGE_ATTRIBUTES") = names(kEdgeAttributeNames);
   m.attr("SIGNATURE") = names(kSignatureNames);
 
-  py::class_<MatchingOptions>(m, "MatchingOptions",
-                              "The cost model of graph matching (matching/graph_matching.h, docs/method.md); "
-                              "the defaults are the library's, as `reeb match --help` shows them.")
-      .def(py::init<>())
-      .def_readwrite("attribute_weight", &MatchingOptions::attribute_weight)
-      .def_readwrite("structure_weight", &MatchingOptions::structure_weight)
-      .def_readwrite("edge_weight", &MatchingOptions::edge_weight)
-      .def_readwrite("profile_weight", &MatchingOptions::profile_weight)
-      .def_readwrite("shape_weight", &MatchingOptions::shape_weight)
-      .def_readwrite("geodesic_shape_weight", &MatchingOptions::geodesic_shape_weight)
-      .def_readwrite("global_shape_weight", &MatchingOptions::global_shape_weight)
-      .def_readwrite("global_geodesic_weight", &MatchingOptions::global_geodesic_weight)
-      .def_readwrite("spectrum_weight", &MatchingOptions::spectrum_weight)
-      .def_readwrite("global_spectrum_weight", &MatchingOptions::global_spectrum_weight)
-      .def_readwrite("unmatched_cost", &MatchingOptions::unmatched_cost)
-      .def_readwrite("min_node_weight", &MatchingOptions::min_node_weight)
-      .def_readwrite("refine_rounds", &MatchingOptions::refine_rounds)
-      .def("__repr__", [](py::object self) {
+  py::class_<MatchingOptions> matching_options(
+      m, "MatchingOptions",
+      "The cost model of graph matching (matching/graph_matching.h, docs/method.md); the defaults are the "
+      "library's, as `reeb match --help` shows them; each option is checked against its range when set.");
+  matching_options
+      .def(py::init([](const py::kwargs& kwargs) {
+             MatchingOptions options;
+             for (const auto& [key, value] : kwargs) {
+               const std::string name = py::str(key);
+               const MatchingOptionField* field = find_option(matching_option_fields(), name);
+               if (!field) throw py::type_error("unknown matching option '" + name + "'");
+               set_matching_option(*field, options, value);
+             }
+             return options;
+           }),
+           "The library's defaults, or those given as keywords (MatchingOptions(unmatched_cost=2.0)).")
+      .def("__repr__", [](const MatchingOptions& options) {
         std::string fields;
-        for (const auto& [name, member] : py::type::of(self).attr("__dict__").cast<py::dict>())
-          if (py::isinstance(member, py::module_::import("builtins").attr("property")))
-            fields += (fields.empty() ? "" : ", ") + std::string(py::str(name)) + "=" +
-                      std::string(py::repr(self.attr(name)));
+        for (const NamedOption& option : named_options(matching_option_fields(), options))
+          fields += (fields.empty() ? "" : ", ") + option.name + "=" + option_text(option.value);
         return "MatchingOptions(" + fields + ")";
       });
+  // One property per row of the table (matching/matching_options.h), each
+  // value checked against its range when set.
+  for (const MatchingOptionField& field : matching_option_fields())
+    matching_options.def_property(
+        field.name.c_str(),
+        [&field](const MatchingOptions& options) {
+          return std::visit([](const auto& v) -> py::object { return py::cast(v); }, field.get(options));
+        },
+        [&field](MatchingOptions& options, const py::object& value) { set_matching_option(field, options, value); },
+        field.help.c_str());
 
   m.def(
       "match",

@@ -6,6 +6,7 @@
 
 #include "mesh_arrays.h"
 
+#include "reebkit/core/option_table.h"
 #include "reebkit/pipeline/analyze_mesh.h"
 
 #include <pybind11/numpy.h>
@@ -50,9 +51,22 @@ ArrayMesh mesh_argument(const PointsArray& V, const IndexArray& F);
 /// Emits each warning of cleaning as a Python RuntimeWarning.
 void warn(const std::vector<std::string>& warnings);
 
+/// A Python value (int, float or str) as the value of the option `field`:
+/// an int where the option is a number is that number. Throws TypeError
+/// for another type; the option's set then checks the kind.
+template <typename Options>
+OptionValue option_value(const OptionField<Options>& field, const py::handle& value) {
+  const bool number = std::holds_alternative<double>(field.get(Options{}));
+  if (py::isinstance<py::str>(value)) return value.cast<std::string>();
+  if (py::isinstance<py::int_>(value) && !number) return value.cast<std::int64_t>();
+  if (py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value)) return value.cast<double>();
+  throw py::type_error("option " + field.name + ": expected an int, a float or a str");
+}
+
 /// The analysis options given as keyword arguments, by the names of the
 /// table of pipeline/analysis_options.h (the others keep the library's
-/// default). Throws TypeError naming an unknown option.
+/// default), each in its range. Throws TypeError naming an unknown option,
+/// InvalidArgument (a ValueError) for a value out of its range.
 AnalysisOptions analysis_options(const py::kwargs& kwargs);
 
 /// `options` by name (the table of pipeline/analysis_options.h), as a dict.

@@ -39,7 +39,7 @@ std::vector<Index> from_input_numbering(const ArrayMesh& m, const std::vector<In
 
 ArrayGraph graph_of(ArrayMesh m, const AnalysisOptions& options) {
   const MeshAnalysis analysis = analyze_mesh(std::move(m.mesh), options);
-  ArrayGraph out{make_graph_record(analysis, compute_attributes(analysis)), {}, {}};
+  ArrayGraph out{make_graph_record(analysis, compute_attributes(analysis)), {}, {}, options};
   const Index rows = m.input_vertices;
   out.vertex_node = to_input_numbering(analysis.mesh, rows, analysis.reeb.vertex_node, kInvalidIndex);
   out.fq = to_input_numbering(analysis.mesh, rows, analysis.fq.value, std::numeric_limits<double>::quiet_NaN());

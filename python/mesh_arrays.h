@@ -11,6 +11,7 @@
 #include "reebkit/pipeline/analyze_mesh.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,9 @@ struct ArrayGraph {
   GraphRecord record;              ///< vertex ids are rows of V (-1: a vertex added to close a hole)
   std::vector<Index> vertex_node;  ///< #V rows: node of each vertex, -1 where the mesh left it out; empty for a collection entry
   std::vector<double> fq;          ///< #V rows: f_q, NaN where left out; empty for a collection entry
+  /// The options it was analysed with (a collection entry: the collection's);
+  /// none for a graph of unknown origin.
+  std::optional<AnalysisOptions> analysis;
 };
 
 /// analyze_mesh, compute_attributes and make_graph_record, as `reeb graph`

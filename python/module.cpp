@@ -7,8 +7,6 @@
 #include "reebkit/core/version.h"
 #include "reebkit/pipeline/analysis_options.h"
 
-#include <algorithm>
-
 namespace reebkit::python {
 
 ArrayMesh mesh_argument(const PointsArray& V, const IndexArray& F) {
@@ -33,24 +31,12 @@ void warn(const std::vector<std::string>& warnings) {
 
 AnalysisOptions analysis_options(const py::kwargs& kwargs) {
   AnalysisOptions options;
-  const auto& fields = analysis_option_fields();
   for (const auto& [key, value] : kwargs) {
     const std::string name = py::str(key);
-    const auto field = std::find_if(fields.begin(), fields.end(),
-                                    [&](const AnalysisOptionField& f) { return f.name == name; });
-    if (field == fields.end()) throw py::type_error("unknown analysis option '" + name + "'");
-    // The library checks the kind; a Python int is a number where the option is one.
-    const bool number = std::holds_alternative<double>(field->get(options));
-    OptionValue given;
-    if (py::isinstance<py::str>(value))
-      given = value.cast<std::string>();
-    else if (py::isinstance<py::int_>(value) && !number)
-      given = value.cast<std::int64_t>();
-    else if (py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value))
-      given = value.cast<double>();
-    else
-      throw py::type_error("analysis option " + name + ": expected an int, a float or a str");
-    field->set(options, given);
+    const AnalysisOptionField* field = find_option(analysis_option_fields(), name);
+    if (!field) throw py::type_error("unknown analysis option '" + name + "'");
+    field->set(options, option_value(*field, value));
+    field->check(options);
   }
   return options;
 }

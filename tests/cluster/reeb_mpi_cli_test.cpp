@@ -234,6 +234,17 @@ TEST_F(ReebMpiCli, ARefusedJobEndsEveryProcessWithOneMessage) {
   EXPECT_EQ(compare_collections(single(), output).first, 0);
 }
 
+// Before: every process printed the error of the command line.
+TEST_F(ReebMpiCli, AnOptionErrorIsPrintedOnce) {
+  const auto [status, out] =
+      run_command(mpirun(2) + kReeb + " index " + shell_quoted(embedded_dataset_dir()) + " -o " +
+                  shell_quoted(*dir_ / "x.h5") + " --checkpoint-seconds -3 2>&1");
+  EXPECT_NE(status, 0) << out;
+  const std::string message = "reeb index: --checkpoint-seconds must be a number >= 0";
+  ASSERT_NE(out.find(message), std::string::npos) << out;
+  EXPECT_EQ(out.find(message), out.rfind(message)) << out;
+}
+
 TEST(ReebMpiShrec07, TwoProcessesWriteTheCollectionOneProcessWrites) {
   REEBKIT_REQUIRE_DATASET(shrec, "shrec07_watertight");
   const TempDir dir;

@@ -39,6 +39,24 @@ GraphRecord direct_entry(const MeshInput& input) {
   return entry;
 }
 
+// The provenance's JSON is made from the table of analysis options: every
+// option under its own name, nothing under another (before: written by hand
+// under other names, "max_loop_length" for max_hole_loop).
+TEST(ExtractCollection, TheOptionsJsonHoldsEveryAnalysisOptionByItsTableName) {
+  AnalysisOptions options;
+  options.features.geodesic = Geodesic::Dijkstra;
+  const std::string json = analysis_options_json(options);
+  std::size_t keys = 0;
+  for (std::size_t at = json.find("\":"); at != std::string::npos; at = json.find("\":", at + 1)) ++keys;
+  EXPECT_EQ(keys, analysis_option_fields().size() + 2) << json;  // + all_components, reeb_graph
+  for (const NamedOption& option : named_analysis_options(options)) {
+    const std::string text = std::holds_alternative<std::string>(option.value) ? "\"" + option_text(option.value) + "\""
+                                                                               : option_text(option.value);
+    EXPECT_NE(json.find("\"" + option.name + "\": " + text), std::string::npos) << option.name << " in " << json;
+  }
+  EXPECT_EQ(json.find('\n'), std::string::npos) << json;
+}
+
 TEST(ExtractCollection, BrokenMeshIsRecordedAndTheOthersMatchTheDirectPipeline) {
   const TempDir dir;
   const std::vector<MeshInput> inputs = write_collection(dir);

@@ -184,6 +184,63 @@ TEST(ReebIndexCli, BadOutputsOptionsAndClassesAreRefusedBeforeAnyWork) {
   EXPECT_FALSE(std::filesystem::exists(dir / "no"));
 }
 
+// Before: an empty folder gave a collection of 0 meshes (exit 0);
+// --checkpoint-seconds -3 was refused after "indexing N meshes" under the
+// library's name of the option.
+TEST(ReebIndexCli, NoInputAndBadIndexingOptionsAreRefusedBeforeTheAnnouncement) {
+  const TempDir dir;
+  std::filesystem::create_directories(dir / "empty");
+  const auto [empty, empty_out] = reeb("index " + q(dir / "empty") + " -o " + q(dir / "c.h5"));
+  EXPECT_EQ(empty, 1) << empty_out;
+  EXPECT_TRUE(contains(empty_out, {"no mesh to index"})) << empty_out;
+  EXPECT_EQ(empty_out.find("indexing"), std::string::npos) << empty_out;
+  const std::filesystem::path folder = mesh_folder(dir, {"eight.off"});
+  for (const std::string option : {"--checkpoint-seconds -3", "--checkpoint-seconds nan", "--threads -1"}) {
+    const auto [status, out] = reeb("index " + q(folder) + " -o " + q(dir / "c.h5") + " " + option);
+    EXPECT_EQ(status, 2) << option << "\n" << out;
+    EXPECT_TRUE(contains(out, {"reeb index: " + option.substr(0, option.find(' ')) + " must be"})) << out;
+    EXPECT_EQ(out.find("indexing"), std::string::npos) << out;
+  }
+  EXPECT_EQ(files_in(dir / ""), (std::vector<std::string>{"empty", "meshes"}));
+}
+
+// Before: a link to the collection was a second name that skipped its lock,
+// and the write replaced the link by a file.
+TEST(ReebIndexCli, ALinkToTheOutputIsLockedAndWrittenAsItsFile) {
+  const TempDir dir;
+  const std::filesystem::path folder = mesh_folder(dir, {"eight.off"});
+  const auto c = dir / "c.h5", link = dir / "link.h5";
+  ASSERT_EQ(reeb("index " + q(folder) + " -o " + q(c)).first, 0);
+  std::filesystem::create_symlink("c.h5", link);
+  {
+    const FileLock lock(c);  // this process writes c.h5
+    const auto [status, out] = reeb("index " + q(folder) + " -o " + q(link));
+    EXPECT_EQ(status, 1) << out;
+    EXPECT_TRUE(contains(out, {"another process (pid " + std::to_string(::getpid()) + ") is writing it"})) << out;
+  }
+  std::filesystem::copy_file(embedded_dataset_dir() / "elk.off", folder / "elk.off");
+  const auto [status, out] = reeb("index " + q(folder) + " -o " + q(link));
+  EXPECT_EQ(status, 0) << out;
+  EXPECT_TRUE(std::filesystem::is_symlink(link));
+  EXPECT_EQ(CollectionReader(c).size(), 2);
+  EXPECT_EQ(files_in(dir / ""), (std::vector<std::string>{"c.h5", "link.h5", "meshes"}));
+}
+
+// Before: under a file-size limit with SIGXFSZ at its default action (a
+// shell without `trap '' XFSZ`), reeb index died without a word, leaving
+// c.h5.partial and c.h5.lock. with_file_size_limit leaves the signal at its
+// default: the same message as on a full disk.
+TEST(ReebIndexCli, AFileSizeLimitIsAWriteErrorNotADeath) {
+  const TempDir dir;
+  const std::filesystem::path folder = mesh_folder(dir, {"elk.off", "eight.off", "cow.off"});
+  const auto c = dir / "c.h5";
+  const auto [status, out] =
+      run_command(with_file_size_limit(kReeb + " index " + q(folder) + " -o " + q(c) + " --threads 1", 20000) + " 2>&1");
+  EXPECT_EQ(status, 1) << out;
+  EXPECT_TRUE(contains(out, {"reeb index: error: " + c.string() + ".partial: ", "File too large"})) << out;
+  EXPECT_FALSE(std::filesystem::exists(dir / "c.h5.lock"));
+}
+
 TEST(ReebIndexCli, ExitStatusSaysWhetherMeshesFailed) {
   const TempDir dir;
   const std::filesystem::path folder = mesh_folder(dir, {"elk.off", "eight.off"}, true);

@@ -128,6 +128,26 @@ TEST_F(ReebVariantsCli, TheRotatedCopyHasTheSameReebGraph) {
   }
 }
 
+// Before: `reeb variants datasets/*.off -o coll/` wrote into coll/datasets/
+// and named the classes datasets/elk.
+TEST_F(ReebVariantsCli, MeshFilesGivenByRelativePathAreNamedByTheirStem) {
+  const auto [status, out] = run_command("cd " + shell_quoted(dir / "") + " && " + REEB_BINARY +
+                                         " variants in/cactus.off -o rel 2>&1");
+  ASSERT_EQ(status, 0) << out;
+  EXPECT_EQ(read_psb_classes(dir / "rel" / "variants.cla").front().name, "cactus");
+  std::vector<std::string> expected = {"variants.cla"};
+  for (const char* suffix : kSuffixes) expected.push_back(std::string("cactus") + suffix + ".off");
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(files_in(dir / "rel"), expected);
+  // Two meshes of one stem would be one class: refused, naming both.
+  std::filesystem::create_directories(dir / "in2");
+  std::filesystem::copy_file(dir / "in" / "cactus.off", dir / "in2" / "cactus.off");
+  const auto [twice, twice_out] = run_command("cd " + shell_quoted(dir / "") + " && " + REEB_BINARY +
+                                              " variants in/cactus.off in2/cactus.off -o twice 2>&1");
+  EXPECT_EQ(twice, 1) << twice_out;
+  EXPECT_NE(twice_out.find("would both be named 'cactus'"), std::string::npos) << twice_out;
+}
+
 TEST_F(ReebVariantsCli, TheSameSeedWritesTheSameFiles) {
   ASSERT_EQ(run_variants(dir / "in", dir / "again"), 0);
   for (const MeshInput& input : list_mesh_inputs({(dir / "out").string()}))

@@ -49,6 +49,26 @@ TEST(DistanceMatrix, BothFormatsRoundTripEveryBit) {
   }
 }
 
+// Before: `reeb distances -o x.m` wrote the binary format and `reeb eval x.m`
+// read it as ASCII, failing: the format is told by the contents.
+TEST(DistanceMatrix, EitherFormatIsReadWhateverTheExtension) {
+  const TempDir dir;
+  const DistanceMatrix m = awkward_matrix();
+  write_psb_matrix(dir / "binary.m", m);
+  write_shrec_matrix(dir / "ascii.matrix", m);
+  write_psb_matrix(dir / "binary", m);
+  for (const char* name : {"binary.m", "ascii.matrix", "binary"}) {
+    const DistanceMatrix back = read_distance_matrix(dir / name);
+    ASSERT_EQ(back.rows(), 3) << name;
+    EXPECT_EQ(std::memcmp(back.data(), m.data(), 9 * sizeof(float)), 0) << name;
+  }
+  // A 1 x 1 binary matrix is 4 bytes, as is the text "0 0\n": the text is read as text (and refused: 2 numbers).
+  write_bytes(dir / "short.matrix", "0 0\n");
+  const std::string text = thrown_message<Error>([&] { read_distance_matrix(dir / "short.matrix"); });
+  EXPECT_NE(text.find("short.matrix"), std::string::npos) << text;
+  EXPECT_EQ(text.find("float32"), std::string::npos) << text;
+}
+
 TEST(DistanceMatrix, ShrecTextIsNLinesOfNNumbers) {
   const TempDir dir;
   write_bytes(dir / "d.txt", "0 1.5 2\n\n1.5 0 +3\r\n  2e0\t3 0   \n");

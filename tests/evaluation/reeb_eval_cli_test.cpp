@@ -136,5 +136,17 @@ TEST_F(ReebEvalCli, AMatrixOfTheWrongSizeIsAnErrorNamingTheFile) {
   EXPECT_TRUE(contains(printed, "toy.cla lists 9 models")) << printed;
 }
 
+// Before: -o naming a file printed a raw "filesystem error".
+TEST_F(ReebEvalCli, AnOutputFolderThatIsAFileIsAnErrorNamingIt) {
+  write_psb_matrix(dir_ / "small.matrix", DistanceMatrix::Zero(9, 9));
+  const auto [status, printed] = run_captured(
+      reeb("'" + (dir_ / "small.matrix").string() + "' --cla '" + (dir_ / "toy.cla").string() + "' -o '" +
+           (dir_ / "small.matrix").string() + "' --no-plot"),
+      dir_ / "log.txt");
+  EXPECT_EQ(status, 1);
+  EXPECT_TRUE(contains(printed, "small.matrix: is a file, not a folder")) << printed;
+  EXPECT_FALSE(contains(printed, "filesystem error")) << printed;
+}
+
 }  // namespace
 }  // namespace reebkit::test

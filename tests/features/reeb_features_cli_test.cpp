@@ -109,6 +109,21 @@ TEST(ReebFeaturesCli, OutputsAreCheckedBeforeWorkAndWrittenWholeOrNotAtAll) {
   EXPECT_EQ(missing, 1) << missing_out;
   EXPECT_TRUE(contains(missing_out, {"s.ply: cannot write it: the folder", "does not exist"})) << missing_out;
   EXPECT_EQ(missing_out.find("read and cleaned"), std::string::npos) << missing_out;
+  // Two outputs on one file (one would be lost), a folder that is a file:
+  // refused before the mesh is read, each named.
+  const std::string json = (dir / "a.json").string();
+  for (const auto& [outputs, message] : std::vector<std::pair<std::string, std::string>>{
+           {"-o " + shell_quoted(json) + " --ply " + shell_quoted(json), json + ": is also the output " + json},
+           {"-o " + shell_quoted(dir / "x" / ".." / "a.json") + " --obj " + shell_quoted(json), json + ": is also the output"},
+           {"-o " + shell_quoted(dir / "elk.off" / "x.json"),
+            "x.json: cannot write it: " + (dir / "elk.off").string() + " is a file, not a folder"}}) {
+    std::filesystem::create_directories(dir / "x");
+    const auto [status, out] = run_command(reeb + " graph " + shell_quoted(dir / "elk.off") + " " + outputs + " 2>&1");
+    EXPECT_EQ(status, 1) << outputs << "\n" << out;
+    EXPECT_TRUE(contains(out, {message})) << out;
+    EXPECT_EQ(out.find("read and cleaned"), std::string::npos) << out;
+    std::filesystem::remove(dir / "x");
+  }
 
   // A write that fails (a file size limit, as a full disk): exit 1 naming the
   // file and the reason, the previous file untouched, no partial file.

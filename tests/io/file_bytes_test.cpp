@@ -84,5 +84,31 @@ TEST(FileBytes, CheckOutputFileRefusesInputsFoldersAndMissingFolders) {
   EXPECT_TRUE(contains(proc, {"/proc/reebkit_out.json", "is not writable"})) << proc;
 }
 
+TEST(FileBytes, TwoOutputsOnOneFileAreRefusedByAnyOfTheirNames) {
+  const TempDir dir;
+  std::filesystem::create_directories(dir / "sub");
+  std::filesystem::create_symlink("a.json", dir / "link.json");
+  const std::vector<std::pair<std::filesystem::path, std::filesystem::path>> same = {
+      {dir / "a.json", dir / "a.json"}, {dir / "a.json", dir / "sub" / ".." / "a.json"}, {dir / "a.json", dir / "link.json"}};
+  for (const auto& [first, second] : same) {
+    const std::string message =
+        thrown_message<InvalidArgument>([&] { check_output_files({first, "", second}); });
+    EXPECT_TRUE(contains(message, {second.string() + ": is also the output " + first.string()})) << message;
+  }
+  EXPECT_NO_THROW(check_output_files({dir / "a.json", "", dir / "b.json"}));
+}
+
+TEST(FileBytes, AWriteThroughALinkReplacesItsFileAndKeepsTheLink) {
+  const TempDir dir;
+  write_file_bytes(dir / "a.json", "old\n");
+  std::filesystem::create_symlink("a.json", dir / "link.json");
+  EXPECT_EQ(resolved_output(dir / "link.json"), std::filesystem::weakly_canonical(dir / "a.json"));
+  EXPECT_EQ(resolved_output(dir / "a.json"), dir / "a.json");
+  write_file_bytes(dir / "link.json", "new\n");
+  EXPECT_TRUE(std::filesystem::is_symlink(dir / "link.json"));
+  EXPECT_EQ(read_file_bytes(dir / "a.json"), "new\n");
+  EXPECT_EQ(files_in(dir / ""), (std::vector<std::string>{"a.json", "link.json"}));
+}
+
 }  // namespace
 }  // namespace reebkit::test

@@ -3,6 +3,7 @@
 // given as a file, the OBJ holds both graphs and one line per matched pair,
 // and a mesh against itself is at distance 0 with nothing deleted.
 #include "io/io_test_util.h"
+#include "reebkit/io/file_bytes.h"
 #include "reebkit/matching/graph_matching.h"
 #include "reebkit/store/collection_file.h"
 #include "support/test_support.h"
@@ -66,6 +67,16 @@ TEST(ReebMatchCli, DistanceCorrespondenceAndObj) {
       run_command(reeb + " match " + shell_quoted(collection + ":nope.off") + " " + shell_quoted(collection + ":eight.off") + " 2>&1");
   EXPECT_EQ(missing, 1);
   EXPECT_NE(missing_out.find("no mesh named 'nope.off'"), std::string::npos) << missing_out;
+
+  // The collection read is an input: --obj on it is refused, the file kept
+  // (before: overwritten with OBJ text, exit 0).
+  const std::string bytes = read_file_bytes(dir / "c.h5");
+  const auto [onto, onto_out] = run_command(reeb + " match " + shell_quoted(collection + ":cactus.off") + " " +
+                                            shell_quoted(dir / "in" / "eight.off") + " --obj " +
+                                            shell_quoted(collection) + " 2>&1");
+  EXPECT_EQ(onto, 1) << onto_out;
+  EXPECT_TRUE(contains(onto_out, {collection + ": is an input of this command"})) << onto_out;
+  EXPECT_EQ(read_file_bytes(dir / "c.h5"), bytes);
 }
 
 }  // namespace

@@ -181,7 +181,7 @@ TEST(CleanMesh, KeepsTheLargestComponentByDefaultAndWarns) {
   const std::string& warning = cleaned.report.warnings[0];
   EXPECT_EQ(warning,
             "soup.off: kept the largest of 2 connected components (2 triangles, 88.9% of the area); "
-            "dropped 1 component with 1 triangle (11.1% of the area); set keep_all_components to keep them");
+            "dropped 1 component with 1 triangle (11.1% of the area); the reeb commands keep them with --all-components");
 }
 
 TEST(CleanMesh, KeepAllComponentsSortsThemLargestFirst) {

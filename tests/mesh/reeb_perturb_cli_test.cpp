@@ -2,6 +2,7 @@
 // for, and its correspondence file (one original vertex id per line after
 // '#' comments, docs/formats.md) maps each vertex near its original.
 #include "io/io_test_util.h"
+#include "reebkit/io/file_bytes.h"
 #include "reebkit/io/mesh_io.h"
 #include "support/test_support.h"
 
@@ -93,6 +94,23 @@ TEST(ReebPerturbCli, RotationScaleTranslationAreExact) {
   }
   EXPECT_NE(run_command(std::string(REEB_BINARY) + " perturb " + shell_quoted(input) + " -o " + shell_quoted(out) +
                         " --rotate q:90").first, 0);
+}
+
+// Before: -o on the input overwrote it (exit 0).
+TEST(ReebPerturbCli, OutputsAreCheckedBeforeAnyWork) {
+  TempDir dir;
+  std::filesystem::copy_file(embedded_dataset_dir() / "cactus.off", dir / "m.off");
+  const std::string mesh = read_file_bytes(dir / "m.off");
+  const std::string perturb = std::string(REEB_BINARY) + " perturb " + shell_quoted(dir / "m.off") + " --scale 2 ";
+  for (const std::string& outputs : {"-o " + shell_quoted(dir / "m.off"),
+                                    "-o " + shell_quoted(dir / "v.off") + " --correspondence " + shell_quoted(dir / "m.off"),
+                                    "-o " + shell_quoted(dir / "v.off") + " --correspondence " + shell_quoted(dir / "v.off")}) {
+    const auto [status, out] = run_command(perturb + outputs + " 2>&1");
+    EXPECT_EQ(status, 1) << outputs << "\n" << out;
+    EXPECT_EQ(out.find("read and cleaned"), std::string::npos) << out;
+    EXPECT_EQ(read_file_bytes(dir / "m.off"), mesh);
+  }
+  EXPECT_EQ(files_in(dir / ""), std::vector<std::string>{"m.off"});
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // End to end: every `reeb` command that analyses a mesh offers every analysis
 // option of the table (pipeline/analysis_options.h), and every command that
 // matches graphs every matching option, each with the library's default.
-#include "reebkit/matching/graph_matching.h"
+#include "reebkit/matching/matching_options.h"
 #include "reebkit/pipeline/analysis_options.h"
 #include "support/test_support.h"
 
@@ -40,25 +40,11 @@ TEST(ReebOptionsCli, EveryAnalysingCommandOffersEveryAnalysisOptionWithTheLibrar
 }
 
 TEST(ReebOptionsCli, EveryMatchingCommandOffersEveryMatchingOptionWithTheLibraryDefault) {
-  const MatchingOptions defaults;
-  const std::vector<std::pair<std::string, OptionValue>> options = {
-      {"attribute_weight", defaults.attribute_weight},
-      {"structure_weight", defaults.structure_weight},
-      {"edge_weight", defaults.edge_weight},
-      {"profile_weight", defaults.profile_weight},
-      {"shape_weight", defaults.shape_weight},
-      {"geodesic_shape_weight", defaults.geodesic_shape_weight},
-      {"global_shape_weight", defaults.global_shape_weight},
-      {"global_geodesic_weight", defaults.global_geodesic_weight},
-      {"unmatched_cost", defaults.unmatched_cost},
-      {"min_node_weight", defaults.min_node_weight},
-      {"refine_rounds", std::int64_t{defaults.refine_rounds}},
-  };
   for (const char* command : {"match", "query", "distances"}) {
     const std::string text = help(command);
-    for (const auto& [name, value] : options)
-      EXPECT_NE(text.find(flag(name, value)), std::string::npos)
-          << "reeb " << command << " --help lacks " << flag(name, value) << "\n"
+    for (const MatchingOptionField& field : matching_option_fields())
+      EXPECT_NE(text.find(flag(field.name, field.get(MatchingOptions{}))), std::string::npos)
+          << "reeb " << command << " --help lacks " << flag(field.name, field.get(MatchingOptions{})) << "\n"
           << text;
   }
 }
@@ -68,6 +54,42 @@ TEST(ReebOptionsCli, AnAnalysisOptionOfTheWrongKindIsRejectedNamingIt) {
                                          shell_quoted(embedded_dataset_dir() / "cow.off") + " --epsilon wide 2>&1");
   EXPECT_EQ(status, 2);
   EXPECT_NE(out.find("epsilon"), std::string::npos) << out;
+}
+
+// Before: --structure-weight -100 gave negative distances and reordered
+// rankings, --unmatched-cost -5 a distance of -5, nan was taken.
+TEST(ReebOptionsCli, AMatchingOptionOutOfItsRangeIsRefusedBeforeAnyMeshIsRead) {
+  const std::string cow = shell_quoted(embedded_dataset_dir() / "cow.off");
+  for (const std::string option : {"--structure-weight -100", "--unmatched-cost -5", "--unmatched-cost 0",
+                                   "--attribute-weight nan", "--profile-weight inf", "--refine-rounds -1"}) {
+    const auto [status, out] = run_command(std::string(REEB_BINARY) + " match " + cow + " " + cow + " " + option + " 2>&1");
+    EXPECT_EQ(status, 1) << option << "\n" << out;
+    const std::string name = option.substr(2, option.find(' ') - 2);
+    std::string field = name;
+    std::replace(field.begin(), field.end(), '-', '_');
+    EXPECT_NE(out.find("reeb match: error: matching option " + field + ": "), std::string::npos) << out;
+    EXPECT_NE(out.find("is out of its range"), std::string::npos) << out;
+    EXPECT_EQ(out.find("read and cleaned"), std::string::npos) << out;
+  }
+}
+
+// Before: "the option '--mesh' is required"; `-o ""` exited 0 writing nothing.
+TEST(ReebOptionsCli, AMissingArgumentIsNamedAsTheUsageNamesItAndAnEmptyValueIsRefused) {
+  const std::string reeb = REEB_BINARY;
+  const auto [missing, missing_out] = run_command(reeb + " features 2>&1");
+  EXPECT_EQ(missing, 2) << missing_out;
+  EXPECT_NE(missing_out.find("reeb features: the argument MESH is missing"), std::string::npos) << missing_out;
+  const auto [second, second_out] = run_command(reeb + " match " + shell_quoted(embedded_dataset_dir() / "cow.off") + " 2>&1");
+  EXPECT_EQ(second, 2) << second_out;
+  EXPECT_NE(second_out.find("the argument B is missing"), std::string::npos) << second_out;
+  const auto [empty, empty_out] =
+      run_command(reeb + " features " + shell_quoted(embedded_dataset_dir() / "cow.off") + " -o '' 2>&1");
+  EXPECT_EQ(empty, 2) << empty_out;
+  EXPECT_NE(empty_out.find("the option '--output' is given an empty value"), std::string::npos) << empty_out;
+  EXPECT_EQ(empty_out.find("read and cleaned"), std::string::npos) << empty_out;
+  const auto [bare, bare_out] = run_command(reeb + " 2>&1");
+  EXPECT_EQ(bare, 2) << bare_out;
+  EXPECT_NE(bare_out.find("usage: reeb <command>"), std::string::npos) << bare_out;
 }
 
 }  // namespace

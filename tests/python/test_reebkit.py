@@ -199,6 +199,48 @@ def test_distances_equal_reeb_distances(collection, reeb, tmp_path):
     assert np.array_equal(c.distances(threads=2), d)
 
 
+def test_distances_warn_of_failed_entries_as_the_cli(reeb, tmp_path):
+    # Before: the CLI warned, Python said nothing.
+    folder = tmp_path / "meshes"
+    folder.mkdir()
+    (folder / "eight.off").write_bytes((DATASETS / "eight.off").read_bytes())
+    (folder / "bad.off").write_text("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n")
+    reeb("index", folder, "-o", tmp_path / "c.h5", "--allow-failures")
+    cli = reeb("distances", tmp_path / "c.h5", "-o", tmp_path / "d.matrix").stderr
+    with pytest.warns(RuntimeWarning) as caught:
+        reebkit.Collection(tmp_path / "c.h5").distances(threads=1)
+    message = str(caught[0].message)
+    assert message.startswith("1 of 2 entries failed when indexed") and "bad.off" in message
+    assert f"warning: {message}" in cli
+
+
+def test_query_refuses_a_graph_analysed_with_other_options(collection):
+    # Before: a wrong distance (0.496 for the mesh itself), silently.
+    c = reebkit.Collection(collection)
+    V, F = reebkit.load_mesh(DATASETS / "elk.off")
+    other = dict(c.analysis_options, epsilon=c.analysis_options["epsilon"] / 2)
+    with pytest.raises(ValueError, match="epsilon"):
+        c.query(reebkit.reeb_graph(V, F, **other))
+    assert c.query(reebkit.reeb_graph(V, F, **c.analysis_options), k=1)[0]["distance"] == 0.0
+    assert c.query(c["elk.off"], k=1)[0]["distance"] == 0.0
+
+
+def test_out_of_range_options_are_refused():
+    # Before: Python skipped even the analysis options' checks.
+    V, F = reebkit.load_mesh(DATASETS / "eight.off")
+    with pytest.raises(ValueError, match="epsilon"):
+        reebkit.reeb_graph(V, F, epsilon=5.0)
+    for name, bad in (("structure_weight", -100.0), ("unmatched_cost", -5.0), ("attribute_weight", float("nan"))):
+        options = reebkit.MatchingOptions()
+        with pytest.raises(ValueError, match=name):
+            setattr(options, name, bad)
+        with pytest.raises(ValueError, match=name):
+            reebkit.MatchingOptions(**{name: bad})
+        assert getattr(options, name) == getattr(reebkit.MatchingOptions(), name)
+    with pytest.raises(TypeError, match="no_such_weight"):
+        reebkit.MatchingOptions(no_such_weight=1.0)
+
+
 def test_evaluate_on_a_hand_made_matrix():
     # Six models on a line, classes A = {0, 1, 2} at 0, 2, 4 and B = {3, 4, 5}
     # at 1, 10, 11. Rankings (ties by index): q0: 3 1 2 4 5; q1: 3 0 2 4 5;

@@ -49,7 +49,7 @@ std::vector<std::string> files_in(const std::filesystem::path& folder) {
 
 std::string with_file_size_limit(const std::string& command, std::uint64_t bytes) {
   const std::string limit = std::to_string(bytes);
-  return "trap '' XFSZ; exec prlimit --fsize=" + limit + ":" + limit + " " + command;
+  return "exec prlimit --fsize=" + limit + ":" + limit + " env --default-signal=XFSZ " + command;
 }
 
 std::pair<int, std::string> run_with_file_size_limit(std::uint64_t bytes, const std::function<void(int fd)>& body) {

@@ -50,7 +50,9 @@ std::vector<std::string> files_in(const std::filesystem::path& folder);
 
 /// A shell command line that runs `command` (one program and its arguments,
 /// no redirections) with files limited to `bytes` (RLIMIT_FSIZE) and SIGXFSZ
-/// ignored, so that a write past the limit fails with EFBIG as on a full disk.
+/// at its default action, which kills the process at a write past the
+/// limit unless it ignores the signal: `reeb` does, so that the write fails
+/// with EFBIG as on a full disk.
 std::string with_file_size_limit(const std::string& command, std::uint64_t bytes);
 
 /// Runs `body` in a forked child with files limited to `bytes`

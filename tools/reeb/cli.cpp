@@ -1,12 +1,15 @@
 #include "reeb/cli.h"
 
-#include "reebkit/core/option_value.h"
+#include "reebkit/core/error.h"
+#include "reebkit/core/option_table.h"
 #include "reebkit/core/timer.h"
 #include "reebkit/io/file_bytes.h"
+#include "reebkit/matching/matching_options.h"
 #include "reebkit/pipeline/analysis_options.h"
 #include "reebkit/store/collection_file.h"
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -21,13 +24,30 @@ std::string flag_name(std::string name) {
   return name;
 }
 
-/// A value stored in `field`, its current value the default, shown in its shortest exact form.
-template <typename T>
-po::typed_value<T>* defaulted(T* field) {
-  if constexpr (std::is_integral_v<T>)
-    return po::value(field)->default_value(*field, option_text(static_cast<std::int64_t>(*field)));
-  else
-    return po::value(field)->default_value(*field, option_text(*field));
+/// One flag per row of `fields` (core/option_table.h), each defaulting to
+/// its value in `options` and setting it once the options are parsed; a
+/// value out of the option's range throws InvalidArgument then, before any
+/// input is read.
+template <typename Options>
+po::options_description table_options(const char* title, const std::vector<OptionField<Options>>& fields,
+                                      Options& options) {
+  po::options_description out(title);
+  for (const OptionField<Options>& field : fields) {
+    const OptionValue current = field.get(options);
+    const auto set = [&options, &field](const auto& value) {
+      field.set(options, OptionValue(value));
+      field.check(options);
+    };
+    std::visit(
+        [&](const auto& value) {
+          using T = std::decay_t<decltype(value)>;
+          out.add_options()(flag_name(field.name).c_str(),
+                            po::value<T>()->default_value(value, option_text(current))->notifier(set),
+                            field.help.c_str());
+        },
+        current);
+  }
+  return out;
 }
 
 }  // namespace
@@ -42,35 +62,38 @@ bool parse(const std::vector<std::string>& args, const std::string& usage,
     std::cout << "usage: " << usage << "\n\n" << all << "\n";
     return false;
   }
-  po::notify(vm);
+  for (const auto& [name, value] : vm) {
+    const auto* text = boost::any_cast<std::string>(&value.value());
+    const po::option_description* option = all.find_nothrow(name, false);
+    if (text && text->empty() && !value.defaulted() && option && option->semantic()->min_tokens() > 0)
+      throw po::error("the option '--" + name + "' is given an empty value");
+  }
+  try {
+    po::notify(vm);
+  } catch (const po::required_option& missing) {
+    // A positional argument left out is named as the usage line names it, not as its hidden option.
+    const unsigned named = std::min(positional.max_total_count(), 16u);
+    for (unsigned i = 0; i < named; ++i) {
+      const std::string& name = positional.name_for_position(i);
+      if (missing.get_option_name() == "--" + name) {
+        std::string argument = name;
+        std::transform(argument.begin(), argument.end(), argument.begin(), ::toupper);
+        throw po::error("the argument " + argument + " is missing");
+      }
+    }
+    throw;
+  }
   print_hdf5_error_stacks(vm.count("verbose") > 0);
   return true;
 }
 
 void check_outputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs) {
-  const std::vector<std::filesystem::path> input_paths(inputs.begin(), inputs.end());
-  for (const std::string& output : outputs)
-    if (!output.empty()) check_output_file(output, input_paths);
+  check_output_files({outputs.begin(), outputs.end()}, {inputs.begin(), inputs.end()});
 }
 
 po::options_description analysis_options(AnalysisOptions& analysis) {
-  po::options_description options("analysis options (a collection keeps those it was indexed with)");
-  for (const AnalysisOptionField& field : analysis_option_fields()) {
-    const OptionValue current = field.get(analysis);
-    const auto set = [&analysis, &field](const auto& value) {
-      field.set(analysis, OptionValue(value));
-      field.check(analysis);  // out of range: an error before any mesh is read
-    };
-    std::visit(
-        [&](const auto& value) {
-          using T = std::decay_t<decltype(value)>;
-          options.add_options()(flag_name(field.name).c_str(),
-                                po::value<T>()->default_value(value, option_text(current))->notifier(set),
-                                field.help.c_str());
-        },
-        current);
-  }
-  return options;
+  return table_options("analysis options (a collection keeps those it was indexed with)", analysis_option_fields(),
+                       analysis);
 }
 
 std::vector<std::string> given_analysis_options(const po::variables_map& vm) {
@@ -82,37 +105,22 @@ std::vector<std::string> given_analysis_options(const po::variables_map& vm) {
   return given;
 }
 
+std::filesystem::path output_folder(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::exists(path, error) && !std::filesystem::is_directory(path, error))
+    throw Error(path + ": is a file, not a folder (-o names the folder of the outputs)");
+  std::filesystem::create_directories(path, error);
+  if (error) throw Error(path + ": cannot create the folder: " + error.message());
+  return path;
+}
+
 void add_components_option(po::options_description& options, bool& all_components) {
   options.add_options()("all-components", po::bool_switch(&all_components),
                         "process every connected component (default: the largest only)");
 }
 
 po::options_description matching_options(MatchingOptions& matching) {
-  po::options_description options("matching options (matching/graph_matching.h)");
-  options.add_options()
-      ("attribute-weight", defaulted(&matching.attribute_weight),
-       "weight of a: node attribute differences (area, f_q range, extent, radius)")
-      ("structure-weight", defaulted(&matching.structure_weight),
-       "weight of s: local structure (degree, start and end types, neighbour area)")
-      ("edge-weight", defaulted(&matching.edge_weight), "weight of e: edge inconsistency of the correspondence")
-      ("profile-weight", defaulted(&matching.profile_weight), "weight of p: radius profiles of the regions")
-      ("shape-weight", defaulted(&matching.shape_weight), "weight of h: Euclidean shape histograms of the regions")
-      ("geodesic-shape-weight", defaulted(&matching.geodesic_shape_weight),
-       "weight of h_g: geodesic histograms of the regions")
-      ("global-shape-weight", defaulted(&matching.global_shape_weight),
-       "weight of g: D2 shape distributions of the whole surfaces")
-      ("global-geodesic-weight", defaulted(&matching.global_geodesic_weight),
-       "weight of g_g: geodesic histograms of the whole surfaces")
-      ("spectrum-weight", defaulted(&matching.spectrum_weight),
-       "weight of r: Laplace-Beltrami spectra of the regions")
-      ("global-spectrum-weight", defaulted(&matching.global_spectrum_weight),
-       "weight of g_s: Laplace-Beltrami spectra of the whole surfaces")
-      ("unmatched-cost", defaulted(&matching.unmatched_cost),
-       "cost of deleting or inserting a node, per unit of node weight")
-      ("min-node-weight", defaulted(&matching.min_node_weight),
-       "added to a node's relative area, so that area-less nodes still count")
-      ("refine-rounds", defaulted(&matching.refine_rounds), "rounds of edge-consistency refinement");
-  return options;
+  return table_options("matching options (matching/graph_matching.h)", matching_option_fields(), matching);
 }
 
 LoadedMesh load_for_command(const std::string& path, bool all_components) {

@@ -7,6 +7,7 @@
 
 #include <boost/program_options.hpp>
 
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
@@ -47,15 +48,23 @@ po::options_description analysis_options(AnalysisOptions& analysis);
 /// at their default), in table order.
 std::vector<std::string> given_analysis_options(const po::variables_map& vm);
 
-/// Checks each non-empty path of `outputs` with check_output_file (its
-/// folder exists and is writable, it is none of `inputs`), before any work.
+/// Checks the non-empty paths of `outputs` with check_output_files (each
+/// one's folder exists and is writable, it is none of `inputs`, no two name
+/// one file), before any work.
 void check_outputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs);
+
+/// The output folder `path` (-o of eval and variants), created with its
+/// parents when missing, before any work. Throws Error naming `path` when
+/// it is a file or cannot be created.
+std::filesystem::path output_folder(const std::string& path);
 
 /// --all-components: every connected component, not the largest only.
 void add_components_option(po::options_description& options, bool& all_components);
 
-/// The options of graph matching: one flag per MatchingOptions field
-/// (--attribute-weight ...), each defaulting to its value in `matching`.
+/// The options of graph matching: one flag per row of
+/// matching_option_fields (matching/matching_options.h; --attribute-weight
+/// for attribute_weight), each defaulting to its value in `matching`; a
+/// value out of the option's range throws InvalidArgument once parsed.
 po::options_description matching_options(MatchingOptions& matching);
 
 /// A mesh read and cleaned for a subcommand, and the time that took.

@@ -7,6 +7,7 @@
 #include "reebkit/collection/shard_merge.h"
 #include "reebkit/core/error.h"
 #include "reebkit/core/timer.h"
+#include "reebkit/io/file_bytes.h"
 #include "reebkit/io/file_lock.h"
 
 #include <mpi.h>
@@ -240,12 +241,11 @@ class Stopwatch {
  public:
   /// `count` things done since construction: {count, wall s, CPU s}.
   std::vector<double> share(std::int64_t count) const {
-    return {static_cast<double>(count), std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_).count(),
-            static_cast<double>(std::clock() - cpu_) / CLOCKS_PER_SEC};
+    return {static_cast<double>(count), wall_.elapsed() / 1000, static_cast<double>(std::clock() - cpu_) / CLOCKS_PER_SEC};
   }
 
  private:
-  std::chrono::steady_clock::time_point wall_ = std::chrono::steady_clock::now();
+  Timer wall_;
   std::clock_t cpu_ = std::clock();
 };
 
@@ -263,9 +263,10 @@ void print_shares(const char* what, const std::vector<double>& shares) {
 
 std::optional<ExtractionSummary> extract_collection_on_cluster(const std::vector<MeshInput>& inputs,
                                                                const std::vector<PsbClass>& classes,
-                                                               const std::filesystem::path& output,
+                                                               const std::filesystem::path& requested,
                                                                const ExtractionOptions& options) {
   Timer clock;
+  const std::filesystem::path output = resolved_output(requested);  // a link: its file is locked and replaced
   check_extraction(inputs, classes, output, options);  // every process: the same verdict, before MPI starts
   MpiJob mpi;
   // Process 0 holds the lock and plans; a refusal (locked, other analysis

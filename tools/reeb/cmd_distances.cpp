@@ -75,18 +75,8 @@ int run_distances(const std::vector<std::string>& args) {
   // prints and writes (docs/cluster.md).
   const bool first_process = launched_rank() == 0;
   if (first_process) std::cerr << "rows in the " << order << "\n";
-  std::vector<std::string> failed;  // a failed entry has a NaN signature (docs/collection-file.md)
-  for (const std::int64_t row : rows)
-    if (std::isnan(collection.signatures()[static_cast<std::size_t>(row) * kSignatureLength]))
-      failed.push_back(collection.names()[static_cast<std::size_t>(row)]);
-  if (!failed.empty() && first_process) {
-    std::cerr << "warning: " << failed.size() << " of " << rows.size()
-              << " entries failed when indexed (reeb info lists why); their rows and columns hold the largest "
-                 "float, "
-              << static_cast<float>(kFailedEntryDistance) << ", 0 on the diagonal, so that they rank last:";
-    for (std::size_t k = 0; k < failed.size() && k < 10; ++k) std::cerr << " " << failed[k];
-    std::cerr << (failed.size() > 10 ? " ...\n" : "\n");
-  }
+  const std::string failed = failed_rows_warning(collection, rows);
+  if (!failed.empty() && first_process) std::cerr << "warning: " << failed << "\n";
   Timer timer;
   std::optional<PairwiseDistances> result;
   if (launched_by_mpi()) {

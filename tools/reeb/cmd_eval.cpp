@@ -142,7 +142,7 @@ int run_eval(const std::vector<std::string>& args) {
   int scaling_k = 0;
   options.add_options()
       ("matrix", po::value(&matrix_path)->required(),
-       "distance matrix: PSB binary .matrix (float32 N x N) or SHREC ASCII (any other extension)")
+       "distance matrix: PSB binary (float32 N x N) or SHREC ASCII, told apart by the contents")
       ("cla", po::value(&cla_path)->required(), "classes of the models, PSB .cla (rows in its model order)")
       ("output,o", po::value(&out_dir)->required(), "report folder: report.md, pr.csv, pr.png, pr.svg")
       ("name", po::value(&name), "name of the method in the report (default: the matrix file name)")
@@ -159,6 +159,7 @@ int run_eval(const std::vector<std::string>& args) {
              options, positional, vm))
     return 0;
 
+  const std::filesystem::path dir = output_folder(out_dir);
   const ModelClasses classes = model_classes(read_psb_classes(cla_path));
   std::vector<Method> methods{method_of(matrix_path)};
   if (!name.empty()) methods.front().name = name;
@@ -178,8 +179,6 @@ int run_eval(const std::vector<std::string>& args) {
   }
   methods.insert(methods.end(), scaled.begin(), scaled.end());
 
-  const std::filesystem::path dir(out_dir);
-  std::filesystem::create_directories(dir);
   write_file_bytes(dir / "pr.csv", pr_csv(methods));
   write_file_bytes(dir / "report.md", report(methods, cla_path));
   if (!no_plot) plot(dir / "pr.csv", dir);

@@ -24,8 +24,13 @@ int run_index(const std::vector<std::string>& args) {
       ("output,o", po::value(&output)->required(), "the collection file to write (HDF5)")
       ("classes", po::value(&classes_path),
        "class labels from a PSB .cla file (model id = file name without extension)")
-      ("threads", po::value(&extraction.threads)->default_value(0), "worker threads (0: as many as OpenMP offers)")
-      ("checkpoint-seconds", po::value(&extraction.checkpoint_seconds)->default_value(extraction.checkpoint_seconds),
+      ("threads", po::value(&extraction.threads)->default_value(0)->notifier([](int n) {
+         if (n < 0) throw po::error("--threads must be >= 0");
+       }), "worker threads (0: as many as OpenMP offers)")
+      ("checkpoint-seconds", po::value(&extraction.checkpoint_seconds)->default_value(extraction.checkpoint_seconds)
+                                 ->notifier([](double s) {
+                                   if (!(s >= 0)) throw po::error("--checkpoint-seconds must be a number >= 0");
+                                 }),
        "make the file (under MPI: each process's shard) durable at least this often: what an interruption loses")
       ("resume", po::bool_switch(&extraction.resume),
        "keep the entries already in the file and compute only new or changed meshes (content hash); the "
@@ -58,6 +63,7 @@ int run_index(const std::vector<std::string>& args) {
     if (!result) return 0;  // not process 0: it reports for the job
   } else {
     extraction.progress = [&bar](const ProgressState& state) { bar(state); };
+    check_extraction(meshes, classes, output, extraction);  // a refusal before the announcement
     std::cerr << "indexing " << meshes.size() << " meshes into " << output << "\n";
     result = extract_collection(meshes, classes, output, extraction);
   }

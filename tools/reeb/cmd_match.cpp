@@ -163,7 +163,11 @@ int run_match(const std::vector<std::string>& args) {
              "with the collection's analysis options)",
              options, positional, vm))
     return 0;
-  check_outputs({obj_path}, {spec_a, spec_b});
+  const auto file_of = [](const std::string& spec) {
+    const auto in_collection = collection_entry(spec);
+    return in_collection ? in_collection->first : spec;
+  };
+  check_outputs({obj_path}, {file_of(spec_a), file_of(spec_b)});
   const AnalysisOptions files = analysis_of_files(spec_a, spec_b, analysis, vm);
   const GraphRecord a = entry_for(spec_a, files), b = entry_for(spec_b, files);
   const GraphMatch match = match_graphs(a, b, matching);

@@ -3,20 +3,17 @@
 // translation and scale, robustness to pose and to sampling), and the
 // correspondence of its vertices to the original's. The steps given run in
 // this order: pose, decimation, remeshing, subdivision, noise, then the
-// similarity (rotation, scale, translation). Each is a library function
-// (deform/pose.h, mesh/decimation.h, mesh/remeshing.h, mesh/resampling.h,
-// mesh/transform.h).
+// similarity (rotation, scale, translation). Each step is perturb_mesh
+// (deform/perturbation.h, as experiments/robustness.cpp applies them), the
+// similarity mesh/transform.h.
 #include "reeb/cli.h"
-#include "reebkit/core/error.h"
-#include "reebkit/deform/pose.h"
+#include "reebkit/deform/perturbation.h"
+#include "reebkit/io/file_bytes.h"
 #include "reebkit/io/mesh_io.h"
-#include "reebkit/mesh/decimation.h"
 #include "reebkit/mesh/remeshing.h"
-#include "reebkit/mesh/resampling.h"
 #include "reebkit/mesh/transform.h"
 
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -96,6 +93,8 @@ int run_perturb(const std::vector<std::string>& args) {
   if (!(scale > 0.0 && std::isfinite(scale))) throw po::error("--scale must be a finite number > 0");
   if (!(noise >= 0.0 && std::isfinite(noise))) throw po::error("--noise must be a finite number >= 0");
   if (subdivide < 0) throw po::error("--subdivide must be >= 0");
+  if (correspondence_path.empty()) correspondence_path = std::filesystem::path(out_path).replace_extension(".corr").string();
+  check_outputs({out_path, correspondence_path}, {mesh_path});
   Similarity similarity;
   similarity.scale = scale;
   if (!rotate.empty()) similarity.rotation = parse_rotation(rotate, seed);
@@ -117,36 +116,34 @@ int run_perturb(const std::vector<std::string>& args) {
   const Mesh original = std::move(load_for_command(mesh_path, false).cleaned.components.front());
   Mesh mesh = original;
   std::vector<Index> correspondence = same_vertices(original).original_vertex;
-  if (vm.count("pose")) {
-    const MeshAnalysis analysis = analyze_mesh(original);
-    PoseOptions pose_options;
-    pose_options.seed = pose_seed;
-    const RandomPose pose = random_pose(analysis, pose_options);
-    for (const std::string& why : pose.skipped) std::cerr << "warning: " << mesh_path << ": " << why << "\n";
-    mesh = original_surface(pose.mesh);  // without the vertices the analysis added to fill small holes
-    std::cout << "pose: " << pose.turns.size() << " leaf component(s) turned by";
-    for (const Deformation& turn : pose.turns) std::cout << " " << turn.angle_degrees;
-    std::cout << " degrees\n";
-  }
-  const auto step = [&](const char* what, MeshVariant variant) {
+  const auto step = [&](const char* what, const Perturbation& p, const MeshAnalysis* analysis = nullptr) {
+    std::vector<std::string> notes;
+    MeshVariant variant = perturb_mesh(mesh, p, analysis, &notes);
     compose(correspondence, variant.original_vertex);
-    std::cout << what << ": " << mesh.num_vertices() << " -> " << variant.mesh.num_vertices() << " vertices\n";
+    if (p.kind == PerturbationKind::Pose) {  // the skipped leaves, then the turns
+      for (std::size_t k = 0; k + 1 < notes.size(); ++k) std::cerr << "warning: " << mesh_path << ": " << notes[k] << "\n";
+      std::cout << what << ": " << notes.back() << "\n";
+    } else {
+      std::cout << what << ": " << mesh.num_vertices() << " -> " << variant.mesh.num_vertices() << " vertices\n";
+    }
     mesh = std::move(variant.mesh);
   };
-  if (decimate != 1.0) step("decimate", decimate_mesh(mesh, DecimationOptions{decimate, 0.02}));
-  if (!remesh_text.empty()) step("remesh", remesh(mesh, remesh_options));
-  if (subdivide > 0) step("subdivide", subdivide_mesh(mesh, subdivide));
-  if (noise > 0.0) mesh = add_normal_noise(mesh, NoiseOptions{noise, seed, NoiseShape::Gaussian});
+  if (vm.count("pose")) {
+    const MeshAnalysis analysis = analyze_mesh(original);
+    step("pose", Perturbation{PerturbationKind::Pose, 0, {}, pose_seed}, &analysis);
+  }
+  if (decimate != 1.0) step("decimate", Perturbation{PerturbationKind::Decimate, decimate, {}, seed});
+  if (!remesh_text.empty()) step("remesh", Perturbation{PerturbationKind::Remesh, 0, remesh_options, seed});
+  if (subdivide > 0) step("subdivide", Perturbation{PerturbationKind::Subdivide, static_cast<double>(subdivide), {}, seed});
+  if (noise > 0.0) step("noise", Perturbation{PerturbationKind::Noise, noise, {}, seed});
   mesh = transformed(mesh, similarity);
 
   write_mesh(out_path, mesh);
-  if (correspondence_path.empty()) correspondence_path = std::filesystem::path(out_path).replace_extension(".corr").string();
-  std::ofstream out(correspondence_path);
+  std::ostringstream out;
   out << "# reeb perturb correspondence: line v (0-based, after this header) = the vertex of " << mesh_path
       << "\n# (its numbering in the file) that vertex v of " << out_path << " stands for\n";
   for (const Index v : correspondence) out << original.source_index(v) << "\n";
-  out.close();
-  if (!out) throw Error(correspondence_path + ": cannot write the correspondence file");
+  write_file_bytes(correspondence_path, out.str());
   std::cout << "wrote " << out_path << " (" << mesh.num_vertices() << " vertices, " << mesh.num_triangles()
             << " triangles) and " << correspondence_path << "\n";
   return 0;

@@ -26,6 +26,7 @@
 #include "reebkit/pipeline/analyze_mesh.h"
 
 #include <iostream>
+#include <map>
 #include <random>
 #include <sstream>
 
@@ -33,14 +34,22 @@ namespace reebkit::cli {
 
 namespace {
 
-// The name of a mesh's outputs inside the output folder: its name as listed
-// (relative to its input folder), or its file name when it was given as a
-// path that is absolute or climbs out (`reeb variants /data/cat.off`), so
-// that nothing is ever written outside the output folder.
-std::string output_name(const std::string& listed) {
-  std::filesystem::path name = std::filesystem::path(listed).lexically_normal();
-  if (name.is_absolute() || name.empty() || *name.begin() == "..") name = name.filename();
-  return name.replace_extension().generic_string();
+// The name of a mesh's outputs and class: the stem of its file, however it
+// was given (`reeb variants datasets/*.off`, a folder, /data/cat.off), so
+// that every file goes straight into the output folder and a class is named
+// after its mesh. Throws Error naming both meshes when two share a stem.
+std::vector<std::string> output_names(const std::vector<MeshInput>& meshes) {
+  std::vector<std::string> names;
+  std::map<std::string, std::string> first;  // stem -> the mesh that has it
+  for (const MeshInput& mesh : meshes) {
+    const std::string stem = mesh.path.stem().string();
+    const auto [it, added] = first.emplace(stem, mesh.path.string());
+    if (!added)
+      throw Error(mesh.path.string() + " and " + it->second + " would both be named '" + stem +
+                  "': rename one, or make the variants of each in its own folder");
+    names.push_back(stem);
+  }
+  return names;
 }
 
 }  // namespace
@@ -60,11 +69,11 @@ int run_variants(const std::vector<std::string>& args) {
   if (!parse(args, "reeb variants INPUT... -o DIR [--seed S]", options, positional, vm)) return 0;
 
   const std::vector<MeshInput> meshes = list_mesh_inputs(inputs);
-  const std::filesystem::path dir(out_dir);
-  std::filesystem::create_directories(dir);
+  const std::vector<std::string> names = output_names(meshes);
+  const std::filesystem::path dir = output_folder(out_dir);
   std::vector<std::pair<std::string, std::vector<std::string>>> classes;
   for (std::size_t i = 0; i < meshes.size(); ++i) {
-    const std::string name = output_name(meshes[i].name);
+    const std::string& name = names[i];
     std::mt19937_64 rng(seed + 0x9E3779B97F4A7C15ull * (i + 1));
     CleanedMesh cleaned = load_for_command(meshes[i].path.string(), false).cleaned;
     const MeshAnalysis analysis = analyze_mesh(std::move(cleaned.components.front()));
@@ -90,7 +99,6 @@ int run_variants(const std::vector<std::string>& args) {
     auto& [class_name, models] = classes.emplace_back(name, std::vector<std::string>{});
     for (const auto& [suffix, variant] : variants) {
       const std::filesystem::path path = dir / (name + suffix + ".off");
-      std::filesystem::create_directories(path.parent_path());
       if (std::filesystem::exists(path) && std::filesystem::equivalent(path, meshes[i].path))
         throw Error(path.string() + ": would overwrite an input mesh; choose another output folder");
       write_off(path, variant);

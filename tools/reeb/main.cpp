@@ -1,10 +1,13 @@
 // reeb: invariant high-level Reeb graphs of 3D meshes, from the command line.
 #include "reeb/cli.h"
+#include "reeb/cluster.h"
 #include "reebkit/core/error.h"
 #include "reebkit/core/version.h"
 
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <iostream>
@@ -44,6 +47,10 @@ void print_usage() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Past a file-size limit (ulimit -f), a write fails with EFBIG, reported
+  // and cleaned up as any write error, instead of the signal killing the
+  // process without a word and leaving its partial output and lock.
+  std::signal(SIGXFSZ, SIG_IGN);
   if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
     print_usage();
     return argc < 2 ? 2 : 0;
@@ -63,11 +70,19 @@ int main(int argc, char** argv) {
         throw reebkit::Error(std::string("standard output: write failed: ") + std::strerror(errno));
       return status;
     } catch (const boost::program_options::error& e) {
-      std::cerr << "reeb " << c.name << ": " << e.what() << " (see reeb " << c.name << " --help)\n";
+      // Every process of an MPI job parses the same command line: one says what is wrong with it.
+      if (reebkit::cli::launched_rank() == 0)
+        std::cerr << "reeb " << c.name << ": " << e.what() << " (see reeb " << c.name << " --help)\n";
       return 2;
     } catch (const std::exception& e) {
       std::cerr << "reeb " << c.name << ": error: " << e.what() << "\n";
-      return 1;
+      // Leave without the libraries' exit handlers: HDF5 1.10 crashes in
+      // them on a file it failed to close after a write error (a full disk
+      // while the file was being created), which CollectionWriter lets go
+      // of. Every output is closed or abandoned by now.
+      std::cout.flush();
+      std::fflush(nullptr);
+      std::_Exit(1);
     }
   }
   std::cerr << "reeb: unknown command '" << argv[1] << "'\n";

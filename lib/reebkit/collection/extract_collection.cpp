@@ -18,21 +18,12 @@
 #include <mutex>
 #include <optional>
 #include <sstream>
+#include <type_traits>
 #include <unordered_map>
+#include <variant>
 
 namespace reebkit {
 namespace {
-
-/// Milliseconds since construction.
-class Stopwatch {
- public:
-  double elapsed() const {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count();
-  }
-
- private:
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-};
 
 /// The entry of one mesh; any exception becomes a failed entry.
 GraphRecord compute_entry(const MeshInput& input, std::uint64_t hash, const std::string& class_label,
@@ -51,7 +42,7 @@ GraphRecord compute_entry(const MeshInput& input, std::uint64_t hash, const std:
 class EntrySink {
  public:
   EntrySink(CollectionWriter& writer, const ExtractionOptions& options, ExtractionSummary& summary,
-            ProgressState& progress, const Stopwatch& clock)
+            ProgressState& progress, const Timer& clock)
       : writer_(writer), options_(options), summary_(summary), progress_(progress), clock_(clock) {}
 
   void write(GraphRecord entry) {
@@ -88,7 +79,7 @@ class EntrySink {
   const ExtractionOptions& options_;
   ExtractionSummary& summary_;
   ProgressState& progress_;
-  const Stopwatch& clock_;
+  const Timer& clock_;
   int since_checkpoint_ = 0;
   double last_checkpoint_ = 0;
 };
@@ -227,6 +218,8 @@ void check_extraction(const std::vector<MeshInput>& inputs, const std::vector<Ps
   if (!(options.checkpoint_seconds >= 0))
     throw InvalidArgument("extract_collection: checkpoint_seconds must be >= 0");
   if (!options.analysis.reeb_graph) throw InvalidArgument("extract_collection: the analysis must build the Reeb graph");
+  if (inputs.empty())
+    throw InvalidArgument(output.string() + ": no mesh to index (the inputs hold no .off .obj .ply or .stl file)");
   check_analysis_options(options.analysis);
   std::vector<std::filesystem::path> input_files;
   for (const MeshInput& input : inputs) input_files.push_back(input.path);
@@ -259,23 +252,19 @@ std::string analysis_options_json(const AnalysisOptions& options) {
   std::ostringstream text;
   JsonWriter json(text);
   json.begin_object();
-  json.key("holes").begin_object().field("max_loop_length", options.holes.max_loop_length).end_object();
-  json.key("features")
-      .begin_object()
-      .field("epsilon", options.features.epsilon)
-      .field("start_vertex", static_cast<long long>(options.features.start_vertex))
-      .field("max_extra_sweeps", options.features.max_extra_sweeps)
-      .field("extra_seeds", options.features.extra_seeds)
-      .field("geodesic", geodesic_name(options.features.geodesic))
-      .field("min_persistence", options.features.min_persistence)
-      .end_object();
-  json.key("reeb")
-      .begin_object()
-      .field("level_lines", level_lines_name(options.reeb.level_lines))
-      .field("all_components", options.reeb.all_components)
-      .field("skeleton_levels", static_cast<long long>(options.reeb.skeleton_levels))
-      .end_object();
-  json.field("reeb_graph", options.reeb_graph).end_object();
+  // The table's options by their names (analysis_options.h), then the two it leaves out.
+  for (const NamedOption& option : named_analysis_options(options)) {
+    json.key(option.name);
+    std::visit(
+        [&json](const auto& value) {
+          if constexpr (std::is_same_v<std::decay_t<decltype(value)>, std::int64_t>)
+            json.value(static_cast<long long>(value));
+          else
+            json.value(value);
+        },
+        option.value);
+  }
+  json.field("all_components", options.reeb.all_components).field("reeb_graph", options.reeb_graph).end_object();
   // One line for the file attribute: drop the writer's line breaks and indentation.
   std::string compact;
   bool indent = false;
@@ -287,7 +276,8 @@ std::string analysis_options_json(const AnalysisOptions& options) {
 }
 
 ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const std::vector<PsbClass>& classes,
-                                     const std::filesystem::path& output, const ExtractionOptions& options) {
+                                     const std::filesystem::path& requested, const ExtractionOptions& options) {
+  const std::filesystem::path output = resolved_output(requested);  // a link: its file is locked and replaced
   check_extraction(inputs, classes, output, options);
   const FileLock lock(output);
   // A new collection is written into OUTPUT.partial, renamed over OUTPUT at
@@ -310,7 +300,7 @@ ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const
       provenance.classes_file = indexed.classes_file;
     }
   }
-  const Stopwatch clock;
+  const Timer clock;
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
   ExtractionSummary summary;
   ProgressState progress;
@@ -409,7 +399,7 @@ ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const
 ExtractionSummary extract_shard(const std::vector<MeshInput>& inputs, const std::vector<PsbClass>& classes,
                                 const std::filesystem::path& shard, const InputClaim& claim,
                                 const ExtractionOptions& options) {
-  const Stopwatch clock;
+  const Timer clock;
   ExtractionSummary summary;
   ProgressState progress;
   progress.total = static_cast<std::int64_t>(inputs.size());

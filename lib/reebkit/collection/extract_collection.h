@@ -53,7 +53,8 @@ struct ExtractionSummary {
   std::int64_t computed() const { return ok + static_cast<std::int64_t>(failed.size()); }
 };
 
-/// The analysis options as one-line JSON text, for the file's provenance.
+/// The analysis options as one-line JSON text, for the file's provenance:
+/// the table of analysis_options.h by name, all_components and reeb_graph.
 std::string analysis_options_json(const AnalysisOptions& options);
 
 /// What a file indexed with `options` and `classes` says of where it came
@@ -67,9 +68,10 @@ std::uint64_t input_hash(const MeshInput& input);
 std::vector<std::uint64_t> hash_inputs(const std::vector<MeshInput>& inputs, int threads);
 
 /// Everything extract_collection checks before any mesh is read: the
-/// options, the output (check_output_file: its folder exists and is
-/// writable, it is none of the inputs nor the classes file) and that
-/// `classes`, when given, name at least one input. Throws InvalidArgument.
+/// options, that there is an input, the output (check_output_file: its
+/// folder exists and is writable, it is none of the inputs nor the classes
+/// file) and that `classes`, when given, name at least one input. Throws
+/// InvalidArgument.
 void check_extraction(const std::vector<MeshInput>& inputs, const std::vector<PsbClass>& classes,
                       const std::filesystem::path& output, const ExtractionOptions& options);
 

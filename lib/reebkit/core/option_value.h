@@ -24,4 +24,9 @@ std::string option_text(const OptionValue& value);
 /// "integer", "number" or "text": the kind of a value, for messages.
 const char* option_kind(const OptionValue& value);
 
+/// `text` read as a value of the kind of `kind` (the whole text: "12",
+/// "0.05", "1e-3", any text for a text). Throws InvalidArgument naming the
+/// text and the kind when it does not read as one.
+OptionValue option_value_from_text(const OptionValue& kind, const std::string& text);
+
 }  // namespace reebkit

@@ -10,10 +10,13 @@ class Timer {
   Timer() : start_(std::chrono::steady_clock::now()) {}
   /// Milliseconds since construction or the last lap().
   double lap() {
-    const auto now = std::chrono::steady_clock::now();
-    const double ms = std::chrono::duration<double, std::milli>(now - start_).count();
-    start_ = now;
+    const double ms = elapsed();
+    start_ = std::chrono::steady_clock::now();
     return ms;
+  }
+  /// Milliseconds since construction or the last lap(), without starting a new lap.
+  double elapsed() const {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count();
   }
 
  private:

@@ -6,7 +6,10 @@
 #include "reebkit/io/number_text.h"
 #include "reebkit/io/text_scanner.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -87,7 +90,13 @@ void write_shrec_matrix(const std::filesystem::path& path, const DistanceMatrix&
 }
 
 DistanceMatrix read_distance_matrix(const std::filesystem::path& path) {
-  return path.extension() == ".matrix" ? read_psb_matrix(path) : read_shrec_matrix(path);
+  // The ASCII format is numbers and blanks only; a binary matrix has other
+  // bytes (the zeros of its diagonal at least), whatever the file's name.
+  const std::string bytes = read_file_bytes(path);
+  const bool text = !bytes.empty() && std::all_of(bytes.begin(), bytes.end(), [](unsigned char c) {
+    return c != 0 && (std::isdigit(c) || std::isspace(c) || std::strchr("+-.eEinfaINFA", c) != nullptr);
+  });
+  return text ? read_shrec_matrix(path) : read_psb_matrix(path);
 }
 
 }  // namespace reebkit

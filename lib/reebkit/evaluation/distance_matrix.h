@@ -34,7 +34,9 @@ DistanceMatrix read_shrec_matrix(const std::filesystem::path& path);
 /// shortest form that reads back to the same bits.
 void write_shrec_matrix(const std::filesystem::path& path, const DistanceMatrix& distances);
 
-/// A `.matrix` file as PSB binary, any other as SHREC ASCII.
+/// A matrix in either format, told apart by the contents (whatever the
+/// file's extension): a file of numbers and blanks only is SHREC ASCII,
+/// any other PSB binary.
 DistanceMatrix read_distance_matrix(const std::filesystem::path& path);
 
 }  // namespace reebkit

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <utility>
 
 namespace reebkit {
 
@@ -70,7 +71,8 @@ std::string read_file_bytes(const fs::path& path) {
   return bytes;
 }
 
-void write_file_bytes(const fs::path& path, std::string_view bytes) {
+void write_file_bytes(const fs::path& requested, std::string_view bytes) {
+  const fs::path path = resolved_output(requested);
   std::error_code ec;
   if (fs::exists(path, ec) && !fs::is_regular_file(path, ec) && !fs::is_directory(path, ec)) {
     // A device or a pipe (/dev/stdout, a FIFO) is written to, never replaced.
@@ -116,13 +118,45 @@ void check_output_file(const fs::path& path, const std::vector<fs::path>& inputs
     }
   }
   const fs::path folder = folder_of(path);
-  if (!fs::is_directory(folder, ec)) refuse("cannot write it: the folder " + folder.string() + " does not exist");
+  if (!fs::is_directory(folder, ec))
+    refuse("cannot write it: " + (fs::exists(folder, ec) ? folder.string() + " is a file, not a folder"
+                                                          : "the folder " + folder.string() + " does not exist"));
   // Creating a file there tells (access() says yes to root on a folder that cannot hold files, e.g. /proc).
   fs::path probe;
   const int fd = create_temporary_beside(path, probe);
   if (fd < 0) refuse("cannot write it: the folder " + folder.string() + " is not writable (" + system_reason() + ")");
   ::close(fd);
   ::unlink(probe.c_str());
+}
+
+void check_output_files(const std::vector<fs::path>& outputs, const std::vector<fs::path>& inputs) {
+  std::vector<std::pair<fs::path, fs::path>> checked;  // as given, resolved
+  for (const fs::path& output : outputs) {
+    if (output.empty()) continue;
+    check_output_file(output, inputs);
+    std::error_code ec;
+    fs::path resolved = fs::weakly_canonical(resolved_output(output), ec);
+    if (ec) resolved = fs::absolute(output);
+    for (const auto& [other, other_resolved] : checked)
+      if (resolved == other_resolved)
+        throw InvalidArgument(output.string() + ": is also the output " + other.string() +
+                              " of this command: give each output its own file");
+    checked.emplace_back(output, resolved);
+  }
+}
+
+fs::path resolved_output(const fs::path& path) {
+  std::error_code ec;
+  if (!fs::is_symlink(path, ec)) return path;
+  // Followed link by link: a link to a file not created yet is resolved too.
+  fs::path target = path;
+  for (int hops = 0; hops < 40 && fs::is_symlink(target, ec); ++hops) {
+    const fs::path next = fs::read_symlink(target, ec);
+    if (ec) return path;
+    target = next.is_absolute() ? next : folder_of(target) / next;
+  }
+  const fs::path resolved = fs::weakly_canonical(target, ec);
+  return ec ? path : resolved;
 }
 
 }  // namespace reebkit

@@ -35,7 +35,7 @@ class AssignmentSolver {
 
  private:
   /// Both, kOwnColumns selecting solve_or_leave's problem (a template: one
-  /// loop each, as fast as when they were written twice).
+  /// loop each, without a test per step).
   template <bool kOwnColumns>
   double solve_rows(const double* cost, int rows, int cols, std::vector<std::int32_t>& assignment);
 

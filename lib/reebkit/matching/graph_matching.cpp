@@ -3,6 +3,7 @@
 #include "reebkit/core/error.h"
 #include "reebkit/matching/assignment.h"
 #include "reebkit/matching/edge_consistency.h"
+#include "reebkit/matching/matching_options.h"
 
 #include <algorithm>
 #include <array>
@@ -350,6 +351,7 @@ double match_distance_up_to(const MatchableGraph& a, const MatchableGraph& b, do
 }
 
 GraphMatch match_graphs(const GraphRecord& a, const GraphRecord& b, const MatchingOptions& options) {
+  check_matching_options(options);
   return match_graphs(make_matchable_graph(a), make_matchable_graph(b), options);
 }
 

@@ -14,9 +14,9 @@ struct HoleFillingOptions {
   /// A boundary loop is filled when its length (sum of its edge lengths) is at
   /// most this fraction of sqrt(surface area) of the loop's connected
   /// component: a scale that pose changes (isometries) and similarity
-  /// transforms leave unchanged. The TOSCA holes measure 0.011-0.079 (see
-  /// results/tosca_graphs.md); the open end of a cylinder of radius r and
-  /// length 4r measures 0.89. 0 fills nothing, infinity fills every loop.
+  /// transforms leave unchanged (the lengths of the TOSCA holes, and why
+  /// this default: results/tosca_graphs.md). 0 fills nothing, infinity
+  /// fills every loop.
   double max_loop_length = 0.2;
 };
 

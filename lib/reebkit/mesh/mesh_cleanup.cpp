@@ -361,7 +361,7 @@ CleanedMesh clean_mesh(const PolygonSoup& soup, const CleanupOptions& options) {
         count_of(size[kept], "triangle", "triangles") + ", " + percent(area[kept], total_area) +
         " of the area); dropped " + count_of(report.components_dropped, "component", "components") + " with " +
         count_of(mesh.num_triangles() - size[kept], "triangle", "triangles") + " (" +
-        percent(total_area - area[kept], total_area) + " of the area); set keep_all_components to keep them");
+        percent(total_area - area[kept], total_area) + " of the area); the reeb commands keep them with --all-components");
     order.resize(1);
   }
   result.components = split_components(mesh, labels, order);

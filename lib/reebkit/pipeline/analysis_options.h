@@ -6,10 +6,11 @@
 // `reeb query MESH` analyses a mesh file the same way and `reeb index
 // --resume` refuses other options. Adding an analysis option is one row of
 // the table (analysis_options.cpp); an option of a new enum type also needs
-// its to_value / from_value pair there (its name as text, as Geodesic's).
+// its option_value_of / set_from_option pair there (its name as text, as
+// Geodesic's).
 #pragma once
 
-#include "reebkit/core/option_value.h"
+#include "reebkit/core/option_table.h"
 #include "reebkit/pipeline/analyze_mesh.h"
 
 #include <functional>
@@ -18,20 +19,8 @@
 
 namespace reebkit {
 
-struct AnalysisOptionField {
-  std::string name;  ///< snake_case, as stored; the command-line flag is --name with '-' for '_'
-  std::string help;  ///< one line for --help
-  /// The option's value in `options`: its kind (integer, number, text) is
-  /// the option's for every AnalysisOptions.
-  std::function<OptionValue(const AnalysisOptions& options)> get;
-  /// Sets the option. Throws InvalidArgument naming the option when `value`
-  /// is of another kind or out of the option's type's range, and the
-  /// option's own error for a text it does not know (e.g. parse_geodesic).
-  std::function<void(AnalysisOptions& options, const OptionValue& value)> set;
-  /// Throws InvalidArgument naming the option, its value and its range when
-  /// its value in `options` is out of that range (the steps check again).
-  std::function<void(const AnalysisOptions& options)> check;
-};
+/// A row of the table (core/option_table.h).
+using AnalysisOptionField = OptionField<AnalysisOptions>;
 
 /// Every analysis option, in the order --help and `reeb info` list them.
 const std::vector<AnalysisOptionField>& analysis_option_fields();

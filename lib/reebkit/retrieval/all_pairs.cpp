@@ -1,9 +1,12 @@
 #include "reebkit/retrieval/all_pairs.h"
 
 #include "reebkit/core/error.h"
+#include "reebkit/matching/matching_options.h"
 
 #include <omp.h>
 
+#include <cmath>
+#include <sstream>
 #include <unordered_map>
 
 namespace reebkit {
@@ -38,6 +41,7 @@ std::vector<double> upper_triangle_rows(const std::vector<GraphRecord>& entries,
                                         std::int64_t last, const AllPairsOptions& options) {
   if (options.threads < 0)
     throw InvalidArgument("all-pairs distances: threads " + std::to_string(options.threads) + " < 0");
+  check_matching_options(options.matching);
   const std::int64_t n = static_cast<std::int64_t>(entries.size());
   if (first < 0 || last < first || last > n)
     throw InvalidArgument("all-pairs distances: rows " + std::to_string(first) + " to " + std::to_string(last) +
@@ -110,6 +114,21 @@ std::vector<std::int64_t> matrix_rows(const CollectionReader& collection, const 
       rows.push_back(it->second);
     }
   return rows;
+}
+
+std::string failed_rows_warning(const CollectionReader& collection, const std::vector<std::int64_t>& rows) {
+  std::vector<std::string> failed;
+  for (const std::int64_t row : rows)
+    if (std::isnan(collection.signatures()[static_cast<std::size_t>(row) * kSignatureLength]))
+      failed.push_back(collection.names()[static_cast<std::size_t>(row)]);
+  if (failed.empty()) return "";
+  std::ostringstream text;
+  text << failed.size() << " of " << rows.size()
+       << " entries failed when indexed (reeb info lists why); their rows and columns hold the largest float, "
+       << static_cast<float>(kFailedEntryDistance) << ", 0 on the diagonal, so that they rank last:";
+  for (std::size_t k = 0; k < failed.size() && k < 10; ++k) text << " " << failed[k];
+  if (failed.size() > 10) text << " ...";
+  return text.str();
 }
 
 std::vector<GraphRecord> matrix_entries(const CollectionReader& collection, const std::vector<std::int64_t>& rows) {

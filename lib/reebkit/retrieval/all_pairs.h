@@ -70,6 +70,11 @@ PairwiseDistances matrix_from_upper_triangle(std::vector<std::string> names, con
 /// the model when a model of the file has no entry, or two models the same.
 std::vector<std::int64_t> matrix_rows(const CollectionReader& collection, const std::vector<PsbClass>& classes = {});
 
+/// What `reeb distances` and Python's Collection.distances warn of when some
+/// of `rows` are failed entries (a NaN signature): how many, what their rows
+/// and columns hold, the first names. "" when none failed.
+std::string failed_rows_warning(const CollectionReader& collection, const std::vector<std::int64_t>& rows);
+
 /// The entries `rows` of `collection` (read once), in the order of `rows`.
 std::vector<GraphRecord> matrix_entries(const CollectionReader& collection, const std::vector<std::int64_t>& rows);
 

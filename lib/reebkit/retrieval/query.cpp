@@ -1,6 +1,7 @@
 #include "reebkit/retrieval/query.h"
 
 #include "reebkit/core/error.h"
+#include "reebkit/matching/matching_options.h"
 
 #include <omp.h>
 
@@ -26,6 +27,7 @@ std::vector<QueryResult> query_collection(const SearchableCollection& collection
     throw InvalidArgument("query: need k >= 1, candidates >= 1 and threads >= 0 (k = " + std::to_string(options.k) +
                           ", candidates = " + std::to_string(options.candidates) +
                           ", threads = " + std::to_string(options.threads) + ")");
+  check_matching_options(options.matching);
   if (collection.index.dimension() != kSignatureLength || collection.graphs.size() != collection.entries.size())
     throw InvalidArgument("query: the signature index or the graphs do not match the collection");
   const MatchableGraph query_graph = make_matchable_graph(query);

@@ -35,6 +35,7 @@
 #include <cstring>
 #include <ctime>
 #include <limits>
+#include <new>
 #include <thread>
 #include <unordered_map>
 
@@ -769,7 +770,11 @@ void CollectionWriter::Impl::abandon() noexcept {
     tables = Tables{};
     file.close();
   } catch (const H5::Exception&) {
-    // nothing more can be done: the file on disk is as the last checkpoint left it
+    // Nothing more can be done: the file on disk is as the last checkpoint
+    // left it. HDF5 keeps the id of a file it failed to close and crashes
+    // when asked to close it again, as H5File's destructor would (a write
+    // that failed while the file was being created): let go of the id.
+    new (&file) H5::H5File();
   }
   batch = Batch{};
   buffered = 0;
