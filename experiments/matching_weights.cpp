@@ -110,6 +110,44 @@ std::string header(const std::vector<const Benchmark*>& collections) {
   return h + "\n" + rule + "\n";
 }
 
+/// Settings scored on the choosing collections, ranked, checked against the
+/// guard (NN and FT at least `floor`), and the one chosen: the smallest sum
+/// of ranks among those the guard keeps (the first on ties).
+struct Choice {
+  std::vector<std::vector<Scores>> scores;  ///< per setting, per choosing collection
+  std::vector<double> rank_sum;
+  std::vector<char> kept;
+  std::size_t chosen = 0;
+};
+
+Choice choose_among(const std::vector<Options>& settings, const std::vector<const Benchmark*>& choosing,
+                    const std::optional<Benchmark>& guard, const std::optional<Scores>& floor) {
+  Choice c;
+  for (const Options& o : settings) {
+    std::vector<Scores> s;
+    for (const Benchmark* b : choosing) s.push_back(score(*b, o));
+    c.scores.push_back(s);
+  }
+  c.rank_sum.assign(settings.size(), 0.0);
+  for (std::size_t b = 0; b < choosing.size(); ++b) {
+    std::vector<double> mean;
+    for (const auto& s : c.scores) mean.push_back(s[b].mean());
+    const std::vector<double> r = ranks(mean);
+    for (std::size_t k = 0; k < settings.size(); ++k) c.rank_sum[k] += r[k];
+  }
+  c.kept.assign(settings.size(), 1);
+  if (guard)
+    for (std::size_t k = 0; k < settings.size(); ++k) {
+      const Scores s = score(*guard, settings[k]);
+      c.kept[k] = s.nn >= floor->nn && s.ft >= floor->ft;
+    }
+  c.chosen = settings.size();
+  for (std::size_t k = 0; k < settings.size(); ++k)
+    if (c.kept[k] && (c.chosen == settings.size() || c.rank_sum[k] < c.rank_sum[c.chosen])) c.chosen = k;
+  if (c.chosen == settings.size()) throw std::runtime_error("no setting passes the guard collection");
+  return c;
+}
+
 int usage() {
   std::fprintf(stderr, "usage: matching_weights --choose A.h5 [B.h5 ...] [--report C.h5 ...] [--guard G.h5]\n"
                        "(collections indexed with --classes)\n");
@@ -161,10 +199,12 @@ int main(int argc, char** argv) {
                 defaults.global_geodesic_weight, defaults.min_node_weight, defaults.refine_rounds, header(all).c_str());
     const std::vector<Setting> factors = {
         {"**defaults**", [](Options&) {}},
-        {"the previous defaults (layout 5): shape 2, global D2 1.6, no spectra",
+        {"the previous defaults (layout 5): shape 2, global D2 1.6, profile 32, no spectra, no global geodesic, "
+         "min node weight 0.01",
          [](Options& o) {
            o.shape_weight = 2, o.global_shape_weight = 1.6, o.spectrum_weight = o.global_spectrum_weight = 0;
            o.geodesic_shape_weight = 2, o.profile_weight = 32, o.unmatched_cost = 1.5;
+           o.global_geodesic_weight = 0, o.min_node_weight = 0.01;
          }},
         {"no spectra (spectrum 0, global spectrum 0)", [](Options& o) { o.spectrum_weight = o.global_spectrum_weight = 0; }},
         {"global spectrum only (every other term 0)",
@@ -177,14 +217,14 @@ int main(int argc, char** argv) {
         {"global spectrum 0", [](Options& o) { o.global_spectrum_weight = 0; }},
         {"+ Euclidean: shape 2", [](Options& o) { o.shape_weight = 2; }},
         {"+ Euclidean: global D2 1.6", [](Options& o) { o.global_shape_weight = 1.6; }},
-        {"global geodesic 0.8", [](Options& o) { o.global_geodesic_weight = 0.8; }},
+        {"global geodesic 0", [](Options& o) { o.global_geodesic_weight = 0; }},
         {"geodesic shape 0", [](Options& o) { o.geodesic_shape_weight = 0; }},
         {"attribute 2", [](Options& o) { o.attribute_weight = 2; }},
         {"attribute 8", [](Options& o) { o.attribute_weight = 8; }},
         {"structure 0", [](Options& o) { o.structure_weight = 0; }},
         {"structure 2", [](Options& o) { o.structure_weight = 2; }},
         {"edge 0, no refinement", [](Options& o) { o.edge_weight = 0, o.refine_rounds = 0; }},
-        {"min node weight 0.05", [](Options& o) { o.min_node_weight = 0.05; }},
+        {"min node weight 0.01", [](Options& o) { o.min_node_weight = 0.01; }},
     };
     for (const Setting& f : factors) {
       Options o = defaults;
@@ -192,14 +232,18 @@ int main(int argc, char** argv) {
       print_row(f.change, on(all, o));
     }
 
-    // The grid over the intrinsic weights, the Euclidean ones off, the others at their defaults.
+    // The grid over the intrinsic weights, the Euclidean ones off, the others
+    // at their defaults but for those the second stage varies, which start
+    // from min node weight 0.01, attribute 4 and global geodesic 0.
+    Options base = defaults;
+    base.min_node_weight = 0.01, base.attribute_weight = 4, base.global_geodesic_weight = 0;
     std::vector<Options> grid;
     for (const double spectrum : {0.0, 2.0, 4.0, 8.0})
       for (const double global_spectrum : {2.0, 4.0, 8.0, 16.0, 32.0})
         for (const double geodesic_shape : {0.0, 2.0, 4.0})
           for (const double profile : {16.0, 32.0})
             for (const double unmatched : {0.5, 1.0, 1.5}) {
-              Options o = defaults;
+              Options o = base;
               o.spectrum_weight = spectrum, o.global_spectrum_weight = global_spectrum;
               o.geodesic_shape_weight = geodesic_shape, o.profile_weight = profile, o.unmatched_cost = unmatched;
               o.shape_weight = o.global_shape_weight = 0;
@@ -207,42 +251,24 @@ int main(int argc, char** argv) {
             }
     std::vector<const Benchmark*> choosing;
     for (const Benchmark& b : choose) choosing.push_back(&b);
-    std::vector<std::vector<Scores>> scores;
-    reebkit::Timer timer;
-    for (const Options& o : grid) scores.push_back(on(choosing, o));
-    const double seconds = timer.lap() / 1000.0;
-    std::vector<std::vector<double>> rank;
-    for (std::size_t c = 0; c < choose.size(); ++c) {
-      std::vector<double> mean;
-      for (const auto& s : scores) mean.push_back(s[c].mean());
-      rank.push_back(ranks(mean));
-    }
-    const auto rank_sum = [&](std::size_t k) {
-      double sum = 0;
-      for (const auto& r : rank) sum += r[k];
-      return sum;
-    };
     // The guard: NN and FT on its collection not below the current defaults'.
-    std::vector<char> kept(grid.size(), 1);
-    std::string guard_text;
-    if (guard) {
-      const Scores floor = score(*guard, defaults);
-      for (std::size_t k = 0; k < grid.size(); ++k) {
-        const Scores s = score(*guard, grid[k]);
-        kept[k] = s.nn >= floor.nn && s.ft >= floor.ft;
-      }
-      guard_text = " among the " + std::to_string(std::count(kept.begin(), kept.end(), 1)) +
-                   " settings that keep NN and FT on " + guard->name + " at least at the current defaults' (" +
-                   std::to_string(floor.nn).substr(0, 5) + ", " + std::to_string(floor.ft).substr(0, 5) + ")";
-    }
-    std::size_t chosen = grid.size();
-    for (std::size_t k = 0; k < grid.size(); ++k)
-      if (kept[k] && (chosen == grid.size() || rank_sum(k) < rank_sum(chosen))) chosen = k;
-    if (chosen == grid.size()) throw std::runtime_error("no grid setting passes the guard collection");
+    const std::optional<Scores> floor = guard ? std::optional<Scores>(score(*guard, defaults)) : std::nullopt;
+    reebkit::Timer timer;
+    const Choice first = choose_among(grid, choosing, guard, floor);
+    const double seconds = timer.lap() / 1000.0;
+    const std::vector<std::vector<Scores>>& scores = first.scores;
+    const std::vector<char>& kept = first.kept;
+    const std::size_t chosen = first.chosen;
+    const auto rank_sum = [&](std::size_t k) { return first.rank_sum[k]; };
+    const std::string guard_text =
+        guard ? " among the " + std::to_string(std::count(kept.begin(), kept.end(), 1)) + " settings that keep NN and FT on " +
+                    guard->name + " at least at the current defaults' (" + std::to_string(floor->nn).substr(0, 5) + ", " +
+                    std::to_string(floor->ft).substr(0, 5) + ")"
+              : "";
 
     std::printf("\n## Grid and the choice\n\n%zu settings (spectrum 0, 2, 4, 8 x global spectrum 2, 4, 8, 16, 32 x "
-                "geodesic shape 0, 2, 4 x profile 16, 32 x unmatched 0.5, 1, 1.5; shape and global D2 0, the other "
-                "weights at their defaults), %.0f s on the choosing collections. Score: the mean of NN, FT and DCG. "
+                "geodesic shape 0, 2, 4 x profile 16, 32 x unmatched 0.5, 1, 1.5; shape and global D2 0; min node "
+                "weight 0.01, attribute 4, global geodesic 0; the other weights at their defaults), %.0f s on the choosing collections. Score: the mean of NN, FT and DCG. "
                 "Each row is scored on every collection; the reporting ones played no part in the choice.\n\n%s",
                 grid.size(), seconds, header(all).c_str());
     for (std::size_t c = 0; c < choose.size(); ++c) {
@@ -251,7 +277,30 @@ int main(int argc, char** argv) {
         if (scores[k][c].mean() > scores[best][c].mean()) best = k;
       print_row("best on " + choose[c].name + " alone (" + describe(grid[best]) + ")", on(all, grid[best]));
     }
-    print_row("**chosen**: smallest rank sum" + guard_text + " (" + describe(grid[chosen]) + ")", on(all, grid[chosen]));
+    print_row("chosen in the grid: smallest rank sum" + guard_text + " (" + describe(grid[chosen]) + ")",
+              on(all, grid[chosen]));
+
+    // Then the weights the grid kept at their defaults, around its choice,
+    // chosen the same way among these settings.
+    std::vector<Options> around;
+    for (const double min_node_weight : {0.01, 0.05})
+      for (const double attribute : {4.0, 8.0})
+        for (const double global_geodesic : {0.0, 0.8}) {
+          Options o = grid[chosen];
+          o.min_node_weight = min_node_weight, o.attribute_weight = attribute, o.global_geodesic_weight = global_geodesic;
+          around.push_back(o);
+        }
+    const Choice second = choose_among(around, choosing, guard, floor);
+    std::printf("\nAround the grid's choice: min node weight 0.01, 0.05 x attribute 4, 8 x global geodesic 0, 0.8, "
+                "chosen the same way among these %zu settings (**bold**: the choice, MatchingOptions' default).\n\n%s",
+                around.size(), header(all).c_str());
+    for (std::size_t k = 0; k < around.size(); ++k) {
+      char text[120];
+      std::snprintf(text, sizeof text, "min node weight %g, attribute %g, global geodesic %g%s",
+                    around[k].min_node_weight, around[k].attribute_weight, around[k].global_geodesic_weight,
+                    second.kept[k] ? "" : " (fails the guard)");
+      print_row(k == second.chosen ? "**" + std::string(text) + "**" : std::string(text), on(all, around[k]));
+    }
 
     std::vector<std::size_t> order(grid.size());
     for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
