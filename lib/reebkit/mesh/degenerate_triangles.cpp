@@ -138,11 +138,16 @@ class EditableMesh {
       std::replace(moved.begin(), moved.end(), u, v);
       const Vec3 before = normal(corners(t)[0], corners(t)[1], corners(t)[2]);
       const Vec3 after = normal(moved[0], moved[1], moved[2]);
-      if (!(after.dot(around) > 0) || (0.5 * before.norm() > limit && !(after.dot(before) > 0))) return std::nullopt;
-      // No triangle becomes degenerate; one that was (in a cluster of small
-      // triangles) may stay so if it grows, to go with a later collapse.
-      if (!(0.5 * after.norm() > limit) && !(after.norm() > before.norm())) return std::nullopt;
+      const bool was_degenerate = !(0.5 * before.norm() > limit);
       smallest = std::min(smallest, 0.5 * after.norm());
+      // No triangle becomes degenerate. One that was (in a cluster of small
+      // triangles, or on a line of the original) may stay so, for a later
+      // flip or collapse; its normal means nothing.
+      if (!(0.5 * after.norm() > limit)) {
+        if (was_degenerate) continue;
+        return std::nullopt;
+      }
+      if (!(after.dot(around) > 0) || (!was_degenerate && !(after.dot(before) > 0))) return std::nullopt;
     }
     return smallest;
   }

@@ -48,9 +48,10 @@ struct TriangleRepair {
 /// collapse of an edge onto one endpoint when the link condition holds, no
 /// vertex is left with fewer than 3 neighbours, a border vertex moves only
 /// along the border and no remaining triangle turns over or becomes
-/// degenerate (one that was may stay so if it grows: a cluster of small
-/// triangles goes by successive collapses). A mesh without degenerate
-/// triangles comes back unchanged.
+/// degenerate (one that was may stay so: a cluster of small triangles, or a
+/// fan of flat ones on one line, goes by successive operations). Each
+/// operation removes at least one degenerate triangle. A mesh without
+/// degenerate triangles comes back unchanged.
 TriangleRepair repair_degenerate_triangles(const Mesh& mesh, double min_area_fraction);
 
 }  // namespace reebkit
