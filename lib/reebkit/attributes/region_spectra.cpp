@@ -113,13 +113,15 @@ SurfaceSpectra surface_spectra(const Mesh& mesh, const std::vector<Index>& verte
   ShapeDnaOptions global;
   global.eigenvalues = kGlobalSpectrumLength;
   global.margin = 4;
-  try {
-    squash(shape_dna(coarse, global), kGlobalSpectrumLength, out.global.data());
-  } catch (const InvalidMeshError&) {
-    // The coarse copy the operator or the iterations could not take: the
-    // surface as given.
-    if (coarse.num_vertices() == mesh.num_vertices()) throw;
-    squash(shape_dna(mesh, global), kGlobalSpectrumLength, out.global.data());
+  // The coarse copy; where the operator or the iterations cannot take it,
+  // the surface as given; where they cannot take that either (a handful of
+  // vertices), zeros, as for a region too small.
+  for (const Mesh* surface : {&coarse, &mesh}) {
+    try {
+      squash(shape_dna(*surface, global), kGlobalSpectrumLength, out.global.data());
+      break;
+    } catch (const InvalidMeshError&) {
+    }
   }
 
   const int n = kRegionSpectrumLength;

@@ -56,9 +56,9 @@ struct SurfaceSpectra {
 /// vertex v belongs to region vertex_region[v] in [0, regions). A triangle
 /// belongs to the region of at least two of its corners (none when all three
 /// differ). Throws InvalidArgument for a vertex_region of another size, a
-/// label out of range or options out of range; InvalidMeshError naming
-/// mesh.source when the whole surface's spectrum cannot be computed (see
-/// shape_dna). A region whose spectrum cannot be computed gets zeros.
+/// label out of range or options out of range. A spectrum that cannot be
+/// computed (see shape_dna: a surface or region of a handful of vertices)
+/// is left at zeros.
 SurfaceSpectra surface_spectra(const Mesh& mesh, const std::vector<Index>& vertex_region, Index regions,
                                const SpectraOptions& options = {});
 
