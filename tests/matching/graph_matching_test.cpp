@@ -120,7 +120,8 @@ TEST(GraphMatching, SymmetricWithInverseCorrespondence) {
         const GraphMatch ab = match_graphs(a, b, options), ba = match_graphs(b, a, options);
         EXPECT_EQ(ab.distance, ba.distance) << a.name << " vs " << b.name;
         EXPECT_GE(ab.distance, 0.0);
-        EXPECT_LE(ab.distance, options.unmatched_cost + options.global_shape_weight + 1e-12);
+        EXPECT_LE(ab.distance, options.unmatched_cost + options.global_shape_weight + options.global_geodesic_weight +
+                                   options.global_spectrum_weight + 1e-12);
         for (std::size_t i = 0; i < ab.correspondence.size(); ++i) {
           if (ab.correspondence[i] < 0) continue;
           EXPECT_EQ(ba.correspondence[static_cast<std::size_t>(ab.correspondence[i])], static_cast<std::int32_t>(i));
@@ -164,10 +165,10 @@ TEST(GraphMatching, PerturbedCopyIsCloserThanAnotherClass) {
 TEST(GraphMatching, DeletingEverythingCostsUnmatchedCost) {
   // With every pair dissimilar beyond twice the deletion cost, nothing is
   // matched and the distance is exactly unmatched_cost (the graphs' part,
-  // without the whole surfaces' D2 term).
+  // without the whole surfaces' terms).
   MatchingOptions options;
   options.unmatched_cost = 1e-9;
-  options.global_shape_weight = options.global_geodesic_weight = 0.0;
+  options.global_shape_weight = options.global_geodesic_weight = options.global_spectrum_weight = 0.0;
   const GraphMatch m = match_graphs(shapes()[0], shapes()[3], options);
   EXPECT_NEAR(m.distance, options.unmatched_cost, 1e-15);
   for (const std::int32_t j : m.correspondence) EXPECT_EQ(j, -1);
@@ -320,6 +321,7 @@ TEST(GraphMatching, PoseInvariantTermsKeepATurnedPartClose) {
   const GraphRecord turned = make_graph_record(posed, compute_attributes(posed));
   MatchingOptions euclidean;
   euclidean.attribute_weight = euclidean.structure_weight = euclidean.edge_weight = euclidean.profile_weight = 0.0;
+  euclidean.spectrum_weight = euclidean.global_spectrum_weight = 0.0;
   MatchingOptions geodesic = euclidean;
   euclidean.geodesic_shape_weight = euclidean.global_geodesic_weight = 0.0;
   euclidean.shape_weight = 4.0;

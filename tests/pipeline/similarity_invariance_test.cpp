@@ -35,9 +35,14 @@ TEST(SimilarityInvariance, SameFeaturePointsGraphAndAttributes) {
       EXPECT_EQ(b.reeb.vertex_node, a.reeb.vertex_node) << "seed " << seed;
       const GraphAttributes c = compute_attributes(b);
       ASSERT_EQ(c.node.size(), attributes.node.size());
-      for (std::size_t i = 0; i < c.node.size(); ++i) EXPECT_NEAR(c.node[i], attributes.node[i], 1e-6);
+      // The Laplace-Beltrami spectra come from a decimated copy whose
+      // collapses follow the rounding of the coordinates: within 0.01
+      // (attributes/region_spectra.h); everything else within 1e-6.
+      for (std::size_t i = 0; i < c.node.size(); ++i)
+        EXPECT_NEAR(c.node[i], attributes.node[i], i % kNodeAttributeCount >= kNodeSpectrum ? 0.01 : 1e-6);
       for (std::size_t i = 0; i < c.edge.size(); ++i) EXPECT_NEAR(c.edge[i], attributes.edge[i], 1e-6);
-      for (std::size_t i = 0; i < c.signature.size(); ++i) EXPECT_NEAR(c.signature[i], attributes.signature[i], 1e-6);
+      for (std::size_t i = 0; i < c.signature.size(); ++i)
+        EXPECT_NEAR(c.signature[i], attributes.signature[i], static_cast<int>(i) >= kSigGlobalSpectrum ? 0.01 : 1e-6);
     }
   }
 }
