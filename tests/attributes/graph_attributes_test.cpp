@@ -507,15 +507,6 @@ TEST(GraphAttributes, GeodesicAttributesIgnoreAPoseChangeThatMovesTheEuclideanOn
   }
 }
 
-/// `mesh` with its vertices renumbered: vertex v becomes to[v].
-Mesh renumbered(const Mesh& mesh, const std::vector<Index>& to) {
-  Mesh out = mesh;
-  for (Index v = 0; v < mesh.num_vertices(); ++v) out.vertices.row(to[static_cast<std::size_t>(v)]) = mesh.vertices.row(v);
-  for (Index t = 0; t < mesh.num_triangles(); ++t)
-    for (int k = 0; k < 3; ++k) out.triangles(t, k) = to[static_cast<std::size_t>(mesh.triangles(t, k))];
-  return out;
-}
-
 // The same surface, graph and f_q with the vertices numbered otherwise (f_q,
 // the segmentation and the diameter ends carried along): every attribute of
 // every region, and the signature, is the same up to rounding.
@@ -526,7 +517,7 @@ TEST(GraphAttributes, InvariantToVertexRenumbering) {
     std::vector<Index> to(static_cast<std::size_t>(a.mesh.num_vertices()));
     std::iota(to.begin(), to.end(), Index{0});
     std::shuffle(to.begin(), to.end(), std::mt19937(7));
-    const Mesh mesh = renumbered(a.mesh, to);
+    const Mesh mesh = test::renumbered(a.mesh, to);
     std::vector<double> fq(a.fq.value.size());
     ReebGraph reeb = a.reeb;
     for (std::size_t v = 0; v < to.size(); ++v) {

@@ -3,6 +3,7 @@
 #include "reebkit/core/error.h"
 #include "reebkit/mesh/shapes.h"
 #include "reebkit/mesh/transform.h"
+#include "support/test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -85,15 +86,9 @@ TEST(RegionSpectra, SimilarityAndRenumberingLeaveTheSpectraNearlyUnchanged) {
     std::vector<Index> order(static_cast<std::size_t>(star.num_vertices()));
     std::iota(order.begin(), order.end(), Index{0});
     std::shuffle(order.begin(), order.end(), rng);
-    Mesh renumbered = moved;
     std::vector<Index> moved_label(label.size());
-    for (Index v = 0; v < star.num_vertices(); ++v) {
-      renumbered.vertices.row(order[static_cast<std::size_t>(v)]) = moved.vertices.row(v);
-      moved_label[static_cast<std::size_t>(order[static_cast<std::size_t>(v)])] = label[static_cast<std::size_t>(v)];
-    }
-    for (Index t = 0; t < star.num_triangles(); ++t)
-      for (int c = 0; c < 3; ++c) renumbered.triangles(t, c) = order[static_cast<std::size_t>(moved.triangles(t, c))];
-    const SurfaceSpectra after = surface_spectra(renumbered, moved_label, 2);
+    for (std::size_t v = 0; v < label.size(); ++v) moved_label[static_cast<std::size_t>(order[v])] = label[v];
+    const SurfaceSpectra after = surface_spectra(test::renumbered(moved, order), moved_label, 2);
     for (std::size_t k = 0; k < before.global.size(); ++k) EXPECT_NEAR(after.global[k], before.global[k], 0.01) << k;
     for (std::size_t k = 0; k < before.region.size(); ++k) EXPECT_NEAR(after.region[k], before.region[k], 0.01) << k;
   }
