@@ -108,14 +108,15 @@ OptionField<Options> option_field(const std::string& what, const std::string& na
                             option_text(value) + "'");
     option_table_detail::from_value(value, access(o), label);
   };
-  field.check = [access, label, range](const Options& o) {
-    if constexpr (std::is_arithmetic_v<T>) {
+  if constexpr (std::is_arithmetic_v<T>)
+    field.check = [access, label, range](const Options& o) {
       const T value = access(o);
       if (!range.holds(static_cast<double>(value)))
         throw InvalidArgument(label + ": " + option_text(option_table_detail::to_value(value)) +
                               " is out of its range " + range.text());
-    }
-  };
+    };
+  else
+    field.check = [](const Options&) {};  // a text option has no range
   return field;
 }
 
