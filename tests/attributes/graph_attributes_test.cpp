@@ -492,11 +492,13 @@ TEST(GraphAttributes, GeodesicAttributesIgnoreAPoseChangeThatMovesTheEuclideanOn
               << " (half L1), its Euclidean D2 by " << turned_d2 << "; every leaf's geodesic histogram by at most "
               << geodesic << "; the whole surface's geodesic histogram by " << global_geodesic << ", its D2 by "
               << global_d2 << "\n";
-    // Measured: the turned part's geodesic histogram 0.0015 (star) and
-    // 0.0023 (capsule), its D2 0.10 and 0.018; the other arms of the star
-    // up to 0.045, as their borders with the core move a little.
+    // Measured with fast marching (the default): the turned part's geodesic
+    // histogram 0.0033 (star) and 0.0006 (capsule), its D2 0.015 and 0.013
+    // (the star's leaf region now ends near the bend, so it turns almost
+    // rigidly); the other arms of the star up to 0.045, as their borders
+    // with the core move a little.
     EXPECT_LE(turned_geodesic, 0.01);
-    EXPECT_GE(turned_d2, 5 * std::max(turned_geodesic, 0.002));
+    EXPECT_GE(turned_d2, 4 * std::max(turned_geodesic, 0.002));
     EXPECT_LE(geodesic, 0.06);
     if (c == 3) {  // measured 0.0025 and 0.083
       EXPECT_LE(global_geodesic, 0.01);
@@ -528,6 +530,10 @@ TEST(GraphAttributes, InvariantToVertexRenumbering) {
     FeaturePoints features = a.features;
     features.source1 = to[static_cast<std::size_t>(a.features.source1)];
     features.source2 = to[static_cast<std::size_t>(a.features.source2)];
+    for (std::size_t v = 0; v < to.size(); ++v) {
+      features.f1[static_cast<std::size_t>(to[v])] = a.features.f1[v];
+      features.f2[static_cast<std::size_t>(to[v])] = a.features.f2[v];
+    }
     const GraphAttributes reference = compute_attributes(a);
     // The D2 histograms sample random points by triangle order, which the
     // renumbering keeps; all the other entries are sums over the surface.

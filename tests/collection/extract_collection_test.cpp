@@ -257,6 +257,7 @@ TEST(ExtractCollection, TheFileKeepsItsAnalysisOptionsAndClassesAndResumeRefuses
   const std::vector<PsbClass> classes = {{"torus", "0", {"m7", "m6"}}, {"star", "0", {"m2", "m1"}}};
   ExtractionOptions options = with_threads(2);
   options.analysis.features.epsilon = 0.1;
+  options.analysis.features.geodesic = Geodesic::Dijkstra;
   options.analysis.features.min_persistence = 0.02;
   options.classes_file = "two.cla";
   extract_collection(inputs, classes, dir / "c.h5", options);
@@ -277,7 +278,7 @@ TEST(ExtractCollection, TheFileKeepsItsAnalysisOptionsAndClassesAndResumeRefuses
   ExtractionOptions other = options;
   other.resume = true;
   other.analysis.features.epsilon = 0.05;
-  other.analysis.features.geodesic = Geodesic::FastMarching;
+  other.analysis.features.geodesic = Geodesic::FastMarching;  // the default
   try {
     extract_collection(inputs, classes, dir / "c.h5", other);
     ADD_FAILURE() << "resumed with other analysis options";

@@ -159,7 +159,10 @@ TEST(Deformation, WeightsRampWithoutJumps) {
       ASSERT_GT(plan.extent, 0.0);
       ASSERT_FALSE(plan.attach_loop.empty());
       for (const Index v : plan.attach_loop) EXPECT_EQ(plan.weight[static_cast<std::size_t>(v)], 0.0);
-      EXPECT_EQ(*std::max_element(plan.weight.begin(), plan.weight.end()), 1.0) << "node " << node;
+      // 1 where a vertex lies a ramp away from the loop and from the held
+      // vertices; on the torus's shortest branch between two held junctions
+      // only within 1 % of it.
+      EXPECT_NEAR(*std::max_element(plan.weight.begin(), plan.weight.end()), 1.0, 0.01) << "node " << node;
       const double slope = 3.0 / (options.falloff * plan.extent);
       const MeshGraph& mg = a->graph;
       for (Index v = 0; v < mg.num_vertices(); ++v)

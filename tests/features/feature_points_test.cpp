@@ -119,15 +119,26 @@ TEST(FeaturePoints, SingleArmShapeHasTwoEnds) {
   EXPECT_EQ(fp.vertices.size(), 2u);
 }
 
+// Under either method, in its own metric; f1 and f2 are the fields from
+// the two ends.
 TEST(FeaturePoints, DiameterEndsAreMutuallyFarthestFeaturePoints) {
   const MeshGraph g = build_mesh_graph(make_star(star(7)));
-  const FeaturePoints fp = extract_feature_points(g);
-  EXPECT_EQ(dijkstra(g, fp.source1).farthest, fp.source2);
-  EXPECT_EQ(dijkstra(g, fp.source2).farthest, fp.source1);
-  EXPECT_DOUBLE_EQ(dijkstra(g, fp.source1).max_distance, fp.diameter);
-  const auto f = sorted(fp.vertices);
-  EXPECT_TRUE(std::binary_search(f.begin(), f.end(), fp.source1));
-  EXPECT_TRUE(std::binary_search(f.begin(), f.end(), fp.source2));
+  for (const Geodesic method : {Geodesic::Dijkstra, Geodesic::FastMarching}) {
+    SCOPED_TRACE(geodesic_name(method));
+    FeatureOptions options;
+    options.geodesic = method;
+    const FeaturePoints fp = extract_feature_points(g, options);
+    const DistanceField from1 = geodesic_distances(g, {fp.source1}, method);
+    const DistanceField from2 = geodesic_distances(g, {fp.source2}, method);
+    EXPECT_EQ(from1.farthest, fp.source2);
+    EXPECT_EQ(from2.farthest, fp.source1);
+    EXPECT_DOUBLE_EQ(from1.max_distance, fp.diameter);
+    EXPECT_EQ(fp.f1, from1.distance);
+    EXPECT_EQ(fp.f2, from2.distance);
+    const auto f = sorted(fp.vertices);
+    EXPECT_TRUE(std::binary_search(f.begin(), f.end(), fp.source1));
+    EXPECT_TRUE(std::binary_search(f.begin(), f.end(), fp.source2));
+  }
 }
 
 TEST(FeaturePoints, FeaturePointsAreMoreThanEpsilonApart) {

@@ -17,9 +17,11 @@ namespace {
 TEST(QuotientFunction, IsOneMinusNormalizedDistanceToNearestFeature) {
   const MeshGraph g = build_mesh_graph(make_torus(40, 14));
   const std::vector<Index> features = {0, 211, 333};
-  const QuotientFunction fq = quotient_function(g, features);
+  for (const Geodesic method : {Geodesic::Dijkstra, Geodesic::FastMarching}) {
+  SCOPED_TRACE(geodesic_name(method));
+  const QuotientFunction fq = quotient_function(g, features, method);
   std::vector<DistanceField> single;
-  for (const Index f : features) single.push_back(dijkstra(g, f));
+  for (const Index f : features) single.push_back(geodesic_distances(g, {f}, method));
   double max_min = 0;
   for (Index v = 0; v < g.num_vertices(); ++v) {
     double m = single[0].distance[v];
@@ -32,6 +34,7 @@ TEST(QuotientFunction, IsOneMinusNormalizedDistanceToNearestFeature) {
     EXPECT_NEAR(fq.value[v], 1.0 - nearest / max_min, 0.5 / 16777216.0 + 1e-15);  // rounded to 2^-24
     EXPECT_EQ(std::round(fq.value[v] * 16777216.0), fq.value[v] * 16777216.0);
     for (const auto& s : single) EXPECT_LE(nearest, s.distance[v]);  // eq. (8): the closest one
+  }
   }
 }
 

@@ -15,10 +15,10 @@ AnalysisOptions changed() {
   AnalysisOptions o;
   o.holes.max_loop_length = 0.5;
   o.features.epsilon = 0.1;
-  o.features.geodesic = Geodesic::FastMarching;
+  o.features.geodesic = Geodesic::Dijkstra;
   o.features.min_persistence = 0.02;
   o.features.start_vertex = 7;
-  o.features.max_extra_sweeps = 3;
+  o.features.max_extra_sweeps = 1;
   o.features.extra_seeds = 0;
   o.reeb.level_lines = LevelLines::Paper;
   o.reeb.skeleton_levels = 50;
@@ -38,14 +38,14 @@ TEST(AnalysisOptions, TheTableNamesEachOptionOnceAndReadsItsMember) {
   ASSERT_EQ(named.size(), analysis_option_fields().size());
   EXPECT_EQ(named[1].name, "epsilon");
   EXPECT_EQ(named[1].value, OptionValue(0.1));
-  EXPECT_EQ(named[2].value, OptionValue(std::string("fmm")));
+  EXPECT_EQ(named[2].value, OptionValue(std::string("dijkstra")));
   EXPECT_EQ(named[4].value, OptionValue(std::int64_t{7}));
 }
 
 TEST(AnalysisOptions, NamedOptionsRoundTrip) {
   const AnalysisOptions back = analysis_options_from(named_analysis_options(changed()));
   EXPECT_TRUE(analysis_option_differences(back, changed()).empty());
-  EXPECT_EQ(back.features.geodesic, Geodesic::FastMarching);
+  EXPECT_EQ(back.features.geodesic, Geodesic::Dijkstra);
   EXPECT_EQ(back.features.start_vertex, 7);
   EXPECT_EQ(back.reeb.skeleton_levels, 50);
   EXPECT_EQ(back.holes.max_loop_length, 0.5);
@@ -65,13 +65,13 @@ TEST(AnalysisOptions, NamedOptionsRoundTrip) {
 
 TEST(AnalysisOptions, DifferencesListEveryChangedOptionInTableOrderWithBothValues) {
   AnalysisOptions other;
-  other.features.geodesic = Geodesic::FastMarching;
+  other.features.geodesic = Geodesic::Dijkstra;
   other.features.min_persistence = 0;
   const auto differences = analysis_option_differences(AnalysisOptions{}, other);
   ASSERT_EQ(differences.size(), 2u);
   EXPECT_EQ(differences[0].name, "geodesic");
-  EXPECT_EQ(differences[0].first, "dijkstra");
-  EXPECT_EQ(differences[0].second, "fmm");
+  EXPECT_EQ(differences[0].first, "fmm");
+  EXPECT_EQ(differences[0].second, "dijkstra");
   EXPECT_EQ(differences[1].name, "min_persistence");
   EXPECT_EQ(differences[1].first, "0.01");
   EXPECT_EQ(differences[1].second, "0");

@@ -123,7 +123,7 @@ TEST(ReebRetrievalCli, QueryByFileUsesTheCollectionsAnalysisOptions) {
   const std::string reeb = REEB_BINARY;
   const std::filesystem::path datasets = embedded_dataset_dir();
   const std::string collection_file = shell_quoted(dir / "c.h5");
-  const std::string analysis = " --epsilon 0.1 --geodesic fmm --min-persistence 0.02";
+  const std::string analysis = " --epsilon 0.1 --geodesic dijkstra --min-persistence 0.02";
   const auto [indexed, index_out] = run_command(reeb + " index " + shell_quoted(datasets) + " -o " + collection_file +
                                                 analysis + " --threads 2 2>&1");
   ASSERT_EQ(indexed, 0) << index_out;
@@ -159,7 +159,7 @@ TEST(ReebRetrievalCli, QueryByFileUsesTheCollectionsAnalysisOptions) {
   EXPECT_EQ(resumed, 1);
   EXPECT_NE(resume_out.find("cannot resume: the file was indexed with other analysis options"), std::string::npos)
       << resume_out;
-  EXPECT_NE(resume_out.find("geodesic: fmm in the file, dijkstra now"), std::string::npos) << resume_out;
+  EXPECT_NE(resume_out.find("geodesic: dijkstra in the file, fmm now"), std::string::npos) << resume_out;
   EXPECT_NE(resume_out.find("min_persistence: 0.02 in the file, 0.03 now"), std::string::npos) << resume_out;
   EXPECT_EQ(resume_out.find("epsilon:"), std::string::npos) << resume_out;
   const auto [same, same_out] = run_command(reeb + " index " + shell_quoted(datasets) + " -o " + collection_file +

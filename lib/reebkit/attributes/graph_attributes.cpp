@@ -10,11 +10,12 @@
 // - Geodesic extent of a region: the eccentricity of its highest vertex
 //   (largest f_q, then largest id; a leaf's feature point), the largest
 //   shortest-path distance from it to a vertex of the region, paths kept to
-//   the region and its one-ring (DijkstraOptions::labels). For a leaf, the
+//   the region and its one-ring (GeodesicOptions::labels), by the method of
+//   the feature points (FeaturePoints::geodesic). For a leaf, the
 //   length of the protrusion from tip to attach loop, whatever its pose. A
 //   region absorbed in several pieces (a line living between two close
 //   events takes scattered vertices) gets its largest piece's value. One
-//   search per piece, about one Dijkstra pass over the mesh in all (a double
+//   search per piece, about one geodesic pass over the mesh in all (a double
 //   sweep for the region's diameter would double the cost and depend on a
 //   local optimum). Divided by the diameter of the feature point search
 //   (FeaturePoints::diameter, section 4.1.2).
@@ -46,9 +47,8 @@
 //   longest geodesic and away from it (for a path graph, the two coordinates
 //   of the bipolar parameterization). Both are symmetric in the two ends,
 //   whose order is arbitrary. The signature's global geodesic histogram is
-//   their distribution over the surface, by area. Two geodesic passes (the
-//   feature point search computes the same two fields and does not keep
-//   them).
+//   their distribution over the surface, by area. No geodesic pass: d1 and
+//   d2 are the feature point search's f1 and f2 (FeaturePoints::f1, f2).
 // - Boundary length of an edge (a, b): the curve joining the midpoints of the
 //   mesh edges from a vertex of a to a vertex of b (through the centroid in a
 //   triangle with three regions), the discrete border between the two
@@ -59,7 +59,7 @@
 
 #include "reebkit/attributes/region_spectra.h"
 #include "reebkit/core/error.h"
-#include "reebkit/geodesic/dijkstra.h"
+#include "reebkit/geodesic/geodesic_solver.h"
 #include "reebkit/mesh/hole_filling.h"
 #include "reebkit/mesh/surface_sampling.h"
 
@@ -68,6 +68,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <string>
 
 namespace reebkit {
@@ -156,8 +157,9 @@ struct RegionGeodesics {
 
 /// Geodesic extent and geodesic histogram of every region (see the file
 /// comment); `vertex_area` and `node_area` weigh the vertices and the regions.
-RegionGeodesics region_geodesics(const MeshGraph& graph, const std::vector<double>& f, const ReebGraph& reeb,
-                                 const std::vector<double>& vertex_area, const std::vector<double>& node_area) {
+RegionGeodesics region_geodesics(const MeshGraph& graph, Geodesic method, const std::vector<double>& f,
+                                 const ReebGraph& reeb, const std::vector<double>& vertex_area,
+                                 const std::vector<double>& node_area) {
   const Index n = graph.num_vertices();
   // Vertices grouped by region (counting sort), ascending ids within a region.
   std::vector<Index> first(reeb.nodes.size() + 1, 0);
@@ -176,8 +178,8 @@ RegionGeodesics region_geodesics(const MeshGraph& graph, const std::vector<doubl
   // searches for node may go.
   std::vector<Index> stamp(at(n), kInvalidIndex);
   std::vector<Index> source(1);
-  DijkstraSolver solver(graph);
-  DijkstraOptions options;
+  const std::unique_ptr<GeodesicSolver> solver = make_geodesic_solver(graph, method);
+  GeodesicOptions options;
   options.labels = &stamp;
   for (Index node = 0; node < reeb.num_nodes(); ++node) {
     options.label = node;
@@ -196,9 +198,9 @@ RegionGeodesics region_geodesics(const MeshGraph& graph, const std::vector<doubl
       for (const Index* v = begin; v != end; ++v)
         if (!done[at(*v)] && (source[0] == kInvalidIndex || f[at(*v)] >= f[at(source[0])])) source[0] = *v;
       if (source[0] == kInvalidIndex) break;
-      const DistanceField& field = solver.run(source, options);
+      const DistanceField& field = solver->run(source, options);
       // Vertices settle by distance: the last region vertex is the farthest.
-      const auto& settled = solver.settled();
+      const auto& settled = solver->settled();
       const auto far = std::find_if(settled.rbegin(), settled.rend(),
                                     [&](Index w) { return reeb.vertex_node[at(w)] == node; });
       extent[at(node)] = std::max(extent[at(node)], field.distance[at(*far)]);
@@ -303,11 +305,10 @@ void shape_distribution(const Mesh& mesh, const WeightedTriangles& from, int sam
 
 /// The signature's global geodesic histogram (kSigGlobalGeodesic, see the
 /// file comment) into h.
-void main_axis_histogram(const MeshGraph& graph, const FeaturePoints& features, const TriangleSums& sums, double* h) {
+void main_axis_histogram(const FeaturePoints& features, const TriangleSums& sums, double* h) {
   std::fill_n(h, kGlobalShapeBins, 0.0);
-  DijkstraSolver solver(graph);
-  const std::vector<double> d1 = solver.run({features.source1}).distance;
-  const std::vector<double>& d2 = solver.run({features.source2}).distance;
+  const std::vector<double>& d1 = features.f1;
+  const std::vector<double>& d2 = features.f2;
   const double diameter = d1[at(features.source2)];
   if (!(diameter > 0.0) || !(sums.total_area > 0.0)) return;
   for (std::size_t v = 0; v < d1.size(); ++v) {
@@ -395,13 +396,15 @@ GraphAttributes compute_attributes(const Mesh& mesh, const MeshGraph& graph, con
       features.source2 >= mesh.num_vertices())
     throw InvalidArgument("compute_attributes: " + where() + ": the feature points have no diameter ends in the mesh");
   if (reeb.vertex_node.size() != at(mesh.num_vertices()) || f.size() != at(mesh.num_vertices()) ||
-      graph.num_vertices() != mesh.num_vertices())
+      graph.num_vertices() != mesh.num_vertices() || features.f1.size() != at(mesh.num_vertices()) ||
+      features.f2.size() != at(mesh.num_vertices()))
     throw InvalidArgument("compute_attributes: " + where() +
-                          ": the mesh, its graph, f_q and the segmentation differ in vertex count");
+                          ": the mesh, its graph, f_q, the feature points' f1 and f2 and the segmentation differ in "
+                          "vertex count");
 
   const Index original_vertices = original_vertex_count(mesh);
   const TriangleSums sums = triangle_sums(mesh, original_vertices, f, reeb);
-  const RegionGeodesics regions = region_geodesics(graph, f, reeb, sums.vertex_area, sums.node_area);
+  const RegionGeodesics regions = region_geodesics(graph, features.geodesic, f, reeb, sums.vertex_area, sums.node_area);
   std::array<double, kGlobalShapeBins> global_shape{};
   const std::vector<double> shape = shape_histograms(mesh, original_vertices, reeb, global_shape.data());
   const SurfaceSpectra spectra = surface_spectra(mesh, reeb.vertex_node, reeb.num_nodes());
@@ -474,7 +477,7 @@ GraphAttributes compute_attributes(const Mesh& mesh, const MeshGraph& graph, con
   largest(std::move(leaf_extent), sig + kSigLeafExtent, kLeafSlots);
   laplacian_spectrum(reeb, degree, sig + kSigEigenvalues);
   std::copy(global_shape.begin(), global_shape.end(), sig + kSigGlobalShape);
-  main_axis_histogram(graph, features, sums, sig + kSigGlobalGeodesic);
+  main_axis_histogram(features, sums, sig + kSigGlobalGeodesic);
   std::copy(spectra.global.begin(), spectra.global.end(), sig + kSigGlobalSpectrum);
   return out;
 }

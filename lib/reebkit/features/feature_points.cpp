@@ -3,6 +3,7 @@
 #include "reebkit/core/error.h"
 #include "reebkit/features/critical_points.h"
 #include "reebkit/features/persistence.h"
+#include "reebkit/geodesic/dijkstra.h"
 
 #include <algorithm>
 #include <cmath>
@@ -30,39 +31,102 @@ struct DiameterEnds {
   }
 };
 
+// The vertex of largest f counted in units of kTieGrid x max f, ties to the
+// larger id: the maximum of f as the extrema are classified below (sos_less
+// on the snapped field), whatever the rounding of a moved or scaled copy.
+Index grid_farthest(const std::vector<double>& f) {
+  const double far = *std::max_element(f.begin(), f.end());
+  const double unit = kTieGrid * far, top = std::round(far / unit);
+  Index v = static_cast<Index>(f.size()) - 1;
+  while (std::round(f[static_cast<std::size_t>(v)] / unit) != top) --v;
+  return v;
+}
+
+// How find_diameter_ends starts and compares.
+struct Sweep {
+  /// The seed is already an end (far from every end found so far): it is
+  /// v_s1 itself, one pass less.
+  bool seed_is_end = false;
+  /// The farthest vertex of a pass is grid_farthest's, not the field's own
+  /// (largest distance, then id).
+  bool grid_ties = false;
+};
+
 // Double sweep from `seed`, repeated (v_s1 <- v_s2, v_s2 <- farthest) until
 // the pair is mutually farthest or `max_extra_sweeps` more passes were spent.
-DiameterEnds find_diameter_ends(GeodesicSolver& solver, Index seed, int max_extra_sweeps) {
+DiameterEnds find_diameter_ends(GeodesicSolver& solver, Index seed, int max_extra_sweeps, Sweep how = {}) {
   DiameterEnds e;
   const DistanceField& field = solver.run({seed});
+  const auto farthest = [&] { return how.grid_ties ? grid_farthest(field.distance) : field.farthest; };
   if (field.reached != static_cast<Index>(field.distance.size()))
     throw InvalidArgument("extract_feature_points: the mesh graph is not connected (" +
                           std::to_string(field.reached) + " of " + std::to_string(field.distance.size()) +
                           " vertices reachable); extract each component on its own");
-  e.s1 = field.farthest;
-  solver.run({e.s1});
-  e.s2 = field.farthest;
+  e.passes = 1;
+  e.s1 = seed;
+  if (!how.seed_is_end) {
+    e.s1 = farthest();
+    solver.run({e.s1});
+    ++e.passes;
+  }
+  e.s2 = farthest();
   e.f1 = field.distance;
   solver.run({e.s2});
-  Index back = field.farthest;  // farthest from s2
+  Index back = farthest();  // farthest from s2
   e.f2 = field.distance;
-  e.passes = 3;
+  ++e.passes;
   for (int extra = 0; extra < max_extra_sweeps && back != e.s1; ++extra) {
     // d(s2, back) > d(s1, s2): the pair moves outward along the diameter.
     e.s1 = e.s2;
     e.s2 = back;
     e.f1.swap(e.f2);
     solver.run({e.s2});
-    back = field.farthest;
+    back = farthest();
     e.f2 = field.distance;
     ++e.passes;
   }
   return e;
 }
 
+// Eqs. (2) and (4): v_s1 farthest from v_r, v_s2 farthest from v_s1, then
+// up to `extra_sweeps` further sweeps until the two are mutually farthest.
+// The search runs from v_r and from vertex 0 and from options.extra_seeds
+// farthest-point seeds (the vertex farthest from every diameter end found so
+// far, from the distance fields the sweeps already computed) and keeps the
+// longest pair (ties: smaller ids), so a start vertex changes the result only
+// where it finds a longer diameter. `passes` of the result counts them all.
+// `seeds_are_ends`: a farthest-point seed is taken as v_s1 (see
+// find_diameter_ends).
+DiameterEnds search_diameter_ends(GeodesicSolver& search, const FeatureOptions& options, int extra_sweeps,
+                                  bool seeds_are_ends) {
+  DiameterEnds ends = find_diameter_ends(search, kCanonicalSeed, extra_sweeps);
+  int passes = ends.passes;
+  std::vector<double> to_ends(ends.f1.size(), std::numeric_limits<double>::infinity());
+  const auto add_ends = [&](const DiameterEnds& e) {
+    for (std::size_t v = 0; v < to_ends.size(); ++v) to_ends[v] = std::min({to_ends[v], e.f1[v], e.f2[v]});
+  };
+  const auto consider = [&](Index seed, bool seed_is_end) {
+    DiameterEnds other = find_diameter_ends(search, seed, extra_sweeps, {seed_is_end});
+    passes += other.passes;
+    add_ends(other);
+    if (other.longer_than(ends)) ends = std::move(other);
+  };
+  add_ends(ends);
+  for (int k = 0; k < options.extra_seeds; ++k)  // max_element: ties go to the smallest id
+    consider(static_cast<Index>(std::max_element(to_ends.begin(), to_ends.end()) - to_ends.begin()), seeds_are_ends);
+  if (options.start_vertex != kCanonicalSeed) consider(options.start_vertex, false);
+  ends.passes = passes;
+  return ends;
+}
+
 }  // namespace
 
 FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOptions& options) {
+  const std::unique_ptr<GeodesicSolver> solver = make_geodesic_solver(graph, options.geodesic);
+  return extract_feature_points(graph, options, *solver);
+}
+
+FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOptions& options, GeodesicSolver& solver) {
   const Index n = graph.num_vertices();
   if (n == 0) throw InvalidArgument("extract_feature_points: empty mesh");
   if (options.start_vertex < 0 || options.start_vertex >= n)
@@ -73,33 +137,30 @@ FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOption
   if (!(options.min_persistence >= 0.0 && options.min_persistence <= 1.0))
     throw InvalidArgument("extract_feature_points: min_persistence must lie in [0, 1], got " +
                           std::to_string(options.min_persistence));
+  if (&solver.graph() != &graph || solver.method() != options.geodesic)
+    throw InvalidArgument(std::string("extract_feature_points: the solver must run ") +
+                          geodesic_name(options.geodesic) + " on the mesh graph analysed");
 
   FeaturePoints out;
-  const std::unique_ptr<GeodesicSolver> geodesic = make_geodesic_solver(graph, options.geodesic);
-  GeodesicSolver& solver = *geodesic;
-
-  // Eqs. (2) and (4): v_s1 farthest from v_r, v_s2 farthest from v_s1, then
-  // further sweeps until the two are mutually farthest. The search runs from
-  // v_r and from vertex 0 and keeps the longer pair (ties: smaller ids), so a
-  // start vertex changes the result only where it finds a longer diameter.
-  DiameterEnds ends = find_diameter_ends(solver, kCanonicalSeed, options.max_extra_sweeps);
-  int passes = ends.passes;
-  // Farthest-point seeds: the vertex farthest from every diameter end found
-  // so far, from the distance fields the sweeps already computed.
-  std::vector<double> to_ends(static_cast<std::size_t>(n), std::numeric_limits<double>::infinity());
-  const auto add_ends = [&](const DiameterEnds& e) {
-    for (std::size_t v = 0; v < to_ends.size(); ++v) to_ends[v] = std::min({to_ends[v], e.f1[v], e.f2[v]});
-  };
-  const auto consider = [&](Index seed) {
-    DiameterEnds other = find_diameter_ends(solver, seed, options.max_extra_sweeps);
-    passes += other.passes;
-    add_ends(other);
-    if (other.longer_than(ends)) ends = std::move(other);
-  };
-  add_ends(ends);
-  for (int k = 0; k < options.extra_seeds; ++k)  // max_element: ties go to the smallest id
-    consider(static_cast<Index>(std::max_element(to_ends.begin(), to_ends.end()) - to_ends.begin()));
-  if (options.start_vertex != kCanonicalSeed) consider(options.start_vertex);
+  out.geodesic = options.geodesic;
+  DiameterEnds ends;
+  if (options.geodesic == Geodesic::Dijkstra) {
+    ends = search_diameter_ends(solver, options, options.max_extra_sweeps, false);
+  } else {
+    // The search runs Dijkstra passes (a farthest-point seed taken as an
+    // end, no extra sweeps); its v_s1 then starts a sweep in the chosen
+    // metric, with ties on the grid of the extrema below, so that the ends
+    // are extrema of f1 and f2 as they classify them.
+    const int search_passes = [&] {
+      DijkstraSolver search(graph);
+      const DiameterEnds found = search_diameter_ends(search, options, 0, true);
+      ends.s1 = found.s1;
+      return found.passes;
+    }();
+    ends = find_diameter_ends(solver, ends.s1, options.max_extra_sweeps, {true, true});
+    ends.passes += search_passes;
+  }
+  const int passes = ends.passes;
   out.sweeps = passes;
   const Index s1 = ends.s1, s2 = ends.s2;
   out.source1 = s1;
@@ -117,7 +178,9 @@ FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOption
       for (double& x : f) x = std::round(x / unit);
     return f;
   };
-  const std::vector<double> f1 = snapped(std::move(ends.f1)), f2 = snapped(std::move(ends.f2));
+  const std::vector<double> f1 = snapped(ends.f1), f2 = snapped(ends.f2);
+  out.f1 = std::move(ends.f1);
+  out.f2 = std::move(ends.f2);
 
   // Eq. (5): E1, E2 are the local extrema (figure 3 classification), those
   // that persist at least min_persistence x diameter when it is set.

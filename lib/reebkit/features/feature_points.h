@@ -21,18 +21,27 @@ struct FeatureOptions {
   /// So v_r changes the result only where it leads to a longer diameter.
   Index start_vertex = 0;
   /// At most this many extra passes per sweep (v_s1 <- v_s2, v_s2 <- the
-  /// vertex farthest from it). 0 = the paper's single double sweep.
-  int max_extra_sweeps = 1;
+  /// vertex farthest from it). 0 = the paper's single double sweep. Only a
+  /// mutually farthest pair is sure to be a pair of feature points (v_s1 an
+  /// extremum of f2, v_s2 of f1); on a round rim (SHREC07 cups) one extra
+  /// pass is not always enough, so the default allows three.
+  int max_extra_sweeps = 3;
   /// Further sweeps from farthest-point seeds (the vertex farthest from the
   /// ends found so far), to find the true diameter more often.
   int extra_seeds = 1;
-  /// How every geodesic distance of the step is computed: the diameter
-  /// search, f1, f2 and the epsilon balls. Dijkstra (the default) follows
-  /// mesh edges, whose zig-zag error oscillates at the scale of the sampling
-  /// and adds spurious extrema on a resampled mesh; FastMarching crosses
-  /// triangles and converges to the surface's distance
-  /// (results/sampling_stability.md).
-  Geodesic geodesic = Geodesic::Dijkstra;
+  /// How the geodesic distances of the step are computed: f1, f2 and the
+  /// epsilon balls (analyze_mesh uses the same method for f_q and the
+  /// attributes). Dijkstra follows mesh edges, whose zig-zag error
+  /// oscillates at the scale of the sampling and moves and adds extrema on a
+  /// resampled or re-posed mesh; FastMarching (the default) crosses
+  /// triangles and converges to the surface's distance (results/robustness/
+  /// report.md). The search for the diameter ends (eqs. 2-4), a search for
+  /// the farthest pair only, always runs Dijkstra passes; under FastMarching
+  /// it is lighter (a farthest-point seed is taken as v_s1, no extra
+  /// sweeps), and its v_s1 starts a sweep in the chosen metric: f1 from
+  /// v_s1, v_s2 farthest from v_s1 in it (eq. 4), f2 from v_s2, and up to
+  /// max_extra_sweeps more until the two are mutually farthest.
+  Geodesic geodesic = Geodesic::FastMarching;
   /// Extrema of f1 and f2 whose topological persistence (features/
   /// persistence.h: how far f must change around one before it merges into a
   /// more extreme one) is below min_persistence x diameter are dropped from
@@ -62,12 +71,22 @@ struct FeaturePoints {
   std::vector<Index> extrema1;
   /// E2: local minima and maxima of f2 (with persistence >= min_persistence x diameter)
   std::vector<Index> extrema2;
-  int sweeps = 0;               ///< full geodesic passes spent finding v_s1, v_s2
+  int sweeps = 0;               ///< full geodesic passes spent finding v_s1, v_s2, f1 and f2
+  /// The method of f1, f2 and the epsilon balls (FeatureOptions::geodesic).
+  Geodesic geodesic = Geodesic::FastMarching;
+  /// f1 and f2 themselves (#V each, distances from source1 and from
+  /// source2), handed on so that later steps need not compute them again.
+  std::vector<double> f1, f2;
 };
 
 /// Extracts the feature points of a connected mesh graph.
 /// \pre the graph is connected (one component) and non-empty; throws
 ///      InvalidArgument otherwise.
 FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOptions& options = {});
+
+/// The same with a solver of method options.geodesic on `graph`, which the
+/// caller reuses for the steps that follow (f_q). Throws InvalidArgument for
+/// a solver of another method or graph.
+FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOptions& options, GeodesicSolver& solver);
 
 }  // namespace reebkit

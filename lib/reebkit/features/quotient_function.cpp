@@ -7,9 +7,14 @@
 namespace reebkit {
 
 QuotientFunction quotient_function(const MeshGraph& graph, const std::vector<Index>& features, Geodesic method) {
+  return quotient_function(*make_geodesic_solver(graph, method), features);
+}
+
+QuotientFunction quotient_function(GeodesicSolver& solver, const std::vector<Index>& features) {
   if (features.empty()) throw InvalidArgument("quotient_function: no feature points");
-  DistanceField d = geodesic_distances(graph, features, method);
-  if (d.reached != graph.num_vertices())
+  solver.run(features);
+  DistanceField d = solver.release();
+  if (d.reached != solver.graph().num_vertices())
     throw InvalidArgument("quotient_function: the mesh graph is not connected");
   QuotientFunction out;
   out.normalization = d.max_distance;

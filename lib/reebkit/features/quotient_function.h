@@ -27,6 +27,10 @@ struct QuotientFunction {
 /// computed by `method` (that of FeatureOptions::geodesic, for consistency).
 /// \pre the graph is connected and `features` is non-empty.
 QuotientFunction quotient_function(const MeshGraph& graph, const std::vector<Index>& features,
-                                   Geodesic method = Geodesic::Dijkstra);
+                                   Geodesic method = Geodesic::FastMarching);
+
+/// The same with a solver the caller already has (that of the feature
+/// points, analyze_mesh), on the graph of the mesh.
+QuotientFunction quotient_function(GeodesicSolver& solver, const std::vector<Index>& features);
 
 }  // namespace reebkit

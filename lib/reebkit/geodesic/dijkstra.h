@@ -28,6 +28,7 @@ class DijkstraSolver final : public GeodesicSolver {
 
   /// Runs from `sources`; the returned field stays valid until the next run.
   const DistanceField& run(const std::vector<Index>& sources, const DijkstraOptions& options = {}) override;
+  Geodesic method() const override { return Geodesic::Dijkstra; }
 };
 
 }  // namespace reebkit

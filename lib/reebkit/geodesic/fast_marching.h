@@ -26,6 +26,7 @@ class FastMarchingSolver final : public GeodesicSolver {
 
   /// Runs from `sources`; the returned field stays valid until the next run.
   const DistanceField& run(const std::vector<Index>& sources, const GeodesicOptions& options = {}) override;
+  Geodesic method() const override { return Geodesic::FastMarching; }
 
   /// Obtuse corners split by a virtual vertex (a statistic of the mesh).
   Index split_corners() const { return static_cast<Index>(virtual_.size() / 4); }

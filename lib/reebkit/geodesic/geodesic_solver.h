@@ -69,6 +69,12 @@ class GeodesicSolver {
   /// the label, or labels not of size #V.
   virtual const DistanceField& run(const std::vector<Index>& sources, const GeodesicOptions& options = {}) = 0;
 
+  /// The method this solver implements.
+  virtual Geodesic method() const = 0;
+
+  /// The graph the solver runs on.
+  const MeshGraph& graph() const { return graph_; }
+
   /// Vertices reached by the last run, in the order they were settled
   /// (increasing distance).
   const std::vector<Index>& settled() const { return settled_; }

@@ -34,8 +34,8 @@ const std::vector<AnalysisOptionField>& analysis_option_fields() {
             [](auto& o) -> auto& { return o.holes.max_loop_length; }, OptionRange{0}),
       field("epsilon", "relaxation radius of the extrema intersection, eq. (6) (fraction of the geodesic diameter)",
             [](auto& o) -> auto& { return o.features.epsilon; }, OptionRange{0, 1, true}),
-      field("geodesic", "geodesic distances: dijkstra (shortest edge paths) or fmm (fast marching across the "
-            "triangles, less sensitive to the sampling)",
+      field("geodesic", "geodesic distances of f1, f2, f_q and the attributes: fmm (fast marching across the "
+            "triangles, the default: less sensitive to sampling and pose) or dijkstra (shortest edge paths)",
             [](auto& o) -> auto& { return o.features.geodesic; }),
       field("min_persistence", "drop the extrema of f1 and f2 whose topological persistence is below this "
             "fraction of the geodesic diameter before the relaxed intersection (0: every local extremum, as the "

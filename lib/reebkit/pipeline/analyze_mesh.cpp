@@ -3,6 +3,7 @@
 #include "reebkit/core/timer.h"
 
 #include <algorithm>
+#include <memory>
 
 namespace reebkit {
 
@@ -20,10 +21,13 @@ MeshAnalysis analyze_mesh(Mesh mesh, const AnalysisOptions& options) {
     a.graph = build_mesh_graph(a.mesh);
   }
   a.timings.graph = timer.lap();
-  a.features = extract_feature_points(a.graph, options.features);
-  a.timings.features = timer.lap();
-  a.fq = quotient_function(a.graph, a.features.vertices, options.features.geodesic);
-  a.timings.quotient = timer.lap();
+  {  // one solver for the feature points and f_q, freed before the Reeb graph
+    const std::unique_ptr<GeodesicSolver> solver = make_geodesic_solver(a.graph, options.features.geodesic);
+    a.features = extract_feature_points(a.graph, options.features, *solver);
+    a.timings.features = timer.lap();
+    a.fq = quotient_function(*solver, a.features.vertices);
+    a.timings.quotient = timer.lap();
+  }
   if (options.reeb_graph) {
     a.reeb = build_reeb_graph(a.mesh, a.graph, a.fq.value, options.reeb);
     a.timings.reeb = timer.lap();

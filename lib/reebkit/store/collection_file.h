@@ -25,8 +25,11 @@ namespace reebkit {
 /// attributes fixed-length): HDF5 reads variable-length strings from its
 /// global heap trusting the stored lengths. 5: the pose-invariant
 /// attributes (node_attr 34 columns, signature 64). 6: the Laplace-Beltrami
-/// spectra (node_attr 40 columns, signature 80).
-inline constexpr int kCollectionLayoutVersion = 6;
+/// spectra (node_attr 40 columns, signature 80). 7: the same columns; the
+/// default geodesic method fast marching, whose fields the attributes now
+/// use too (the main axis, the region extents), and similarity-invariant
+/// spectra.
+inline constexpr int kCollectionLayoutVersion = 7;
 
 /// Where the file came from: file attributes, and two groups.
 struct Provenance {
