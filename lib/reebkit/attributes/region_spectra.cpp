@@ -133,7 +133,7 @@ SurfaceSpectra surface_spectra(const Mesh& mesh, const std::vector<Index>& verte
   global.eigenvalues = kGlobalSpectrumLength;
   global.margin = 4;
   // The coarse copy; where the operator or the iterations cannot take it,
-  // the surface as given; where they cannot take that either (a handful of
+  // the surface itself; where they cannot take that either (a handful of
   // vertices), zeros, as for a region too small.
   for (const Mesh* m : {&coarse, &surface}) {
     try {
@@ -151,7 +151,7 @@ SurfaceSpectra surface_spectra(const Mesh& mesh, const std::vector<Index>& verte
   local.margin = 2;  // a part of a shape has no symmetry to make its eigenvalues multiple
   for (Index r = 0; r < regions; ++r) {
     if (!(region_area[at(r)] >= options.min_region_area * total_area) || region_area[at(r)] == 0.0) continue;
-    // Cut from the surface as given, then coarsened at the same ratio: a
+    // Cut from the surface before its decimation, then coarsened at the same ratio: a
     // border cut from the coarse copy would zig-zag with the collapses.
     const Mesh part = coarsened(largest_piece(submesh(surface, region_triangles[at(r)], renumber)));
     if (part.num_vertices() < n + 2) continue;
