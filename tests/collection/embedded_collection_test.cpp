@@ -39,14 +39,14 @@ struct PinnedGraph {
 // eight 2, elk 1, the others 0 = their genus). Update here, and only here,
 // when the graph or the attributes change on purpose.
 constexpr PinnedGraph kPinned[] = {
-    {"anchor.off", 15, 2, 4, 0x754f9b5cda267effull},
-    {"bunny.off", 5, 3, 0, 0x877eeb3256fb7251ull},
-    {"cactus.off", 5, 3, 0, 0x7e8d24e9ed7eb6e6ull},
-    {"cow.off", 19, 10, 0, 0x253a6ca5ddf09eccull},
-    {"eight.off", 9, 2, 2, 0x3592adae481dd2b9ull},
-    {"elk.off", 10, 4, 1, 0xfd4ac0549a442613ull},
-    {"hand.off", 3, 2, 0, 0x695924fc11ff0a93ull},
-    {"helmet.off", 12, 2, 3, 0xd2b8154704ec1c7full},
+    {"anchor.off", 15, 2, 4, 0xdfcd6aa64573daf2ull},
+    {"bunny.off", 5, 3, 0, 0xa758bc94b87c5c67ull},
+    {"cactus.off", 5, 3, 0, 0x6e9dea080fbb7d55ull},
+    {"cow.off", 19, 10, 0, 0x3d9162a63f7f5479ull},
+    {"eight.off", 9, 2, 2, 0x2f509b6259e58c20ull},
+    {"elk.off", 10, 4, 1, 0x33fa5cf522e35997ull},
+    {"hand.off", 3, 2, 0, 0x284cf77542a0a531ull},
+    {"helmet.off", 12, 2, 3, 0x3def9330bc6f93d1ull},
 };
 
 // Retrieval on the variants collection (48 meshes, 8 classes of 6), as the

@@ -1,10 +1,14 @@
 #include "reebkit/mesh/transform.h"
 
 #include "reebkit/mesh/shapes.h"
+#include "support/test_support.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <numeric>
+#include <random>
 
 namespace reebkit {
 namespace {
@@ -37,6 +41,49 @@ TEST(Transform, TransformedScalesEveryDistance) {
                 s.scale * (mesh.vertices.row(v) - mesh.vertices.row(0)).norm(), 1e-12);
   EXPECT_TRUE(out.vertices.row(0).transpose().isApprox(s.scale * s.rotation * mesh.vertices.row(0).transpose() +
                                                          s.translation));
+}
+
+// Similar copies of a shape with well-separated second moments, their
+// vertices renumbered, have the same canonical copy to the last bit, and the
+// copy is the shape at unit area about its centroid.
+TEST(Transform, CanonicalCopyIsTheSameForEverySimilarCopy) {
+  StarOptions options;
+  options.levels = 4;
+  const Mesh star = make_star(options);
+  const CanonicalCopy canonical = canonical_copy(star);
+  EXPECT_GT(canonical.axis_gap, 1e-2);
+  EXPECT_NEAR(surface_area(canonical.mesh), 1.0, 1e-4);
+  EXPECT_LT(canonical.mesh.vertices.colwise().mean().norm(), 0.1);
+  const double scale = std::sqrt(surface_area(star));
+  for (Index v = 1; v < star.num_vertices(); v += 97)
+    EXPECT_NEAR((canonical.mesh.vertices.row(v) - canonical.mesh.vertices.row(0)).norm() * scale,
+                (star.vertices.row(canonical.original_vertex[static_cast<std::size_t>(v)]) -
+                 star.vertices.row(canonical.original_vertex[0]))
+                    .norm(),
+                1e-5 * scale);
+  std::mt19937_64 rng(3);
+  for (int trial = 0; trial < 4; ++trial) {
+    SCOPED_TRACE(trial);
+    std::vector<Index> order(static_cast<std::size_t>(star.num_vertices()));
+    std::iota(order.begin(), order.end(), Index{0});
+    std::shuffle(order.begin(), order.end(), rng);
+    const Mesh moved = test::renumbered(transformed(star, random_similarity(star, rng)), order);
+    const CanonicalCopy again = canonical_copy(moved);
+    EXPECT_EQ(again.mesh.vertices, canonical.mesh.vertices);
+    EXPECT_EQ(again.mesh.triangles, canonical.mesh.triangles);
+    for (std::size_t v = 0; v < again.original_vertex.size(); ++v)
+      ASSERT_EQ(again.original_vertex[v], order[static_cast<std::size_t>(canonical.original_vertex[v])]) << v;
+  }
+}
+
+// The axes of a shape with a symmetry are ill-defined: a small axis_gap.
+TEST(Transform, CanonicalCopyReportsIllDefinedAxes) {
+  EXPECT_LT(canonical_copy(make_icosphere(3)).axis_gap, 1e-9);  // icosahedral symmetry: a multiple of the identity
+  EXPECT_LT(canonical_copy(make_torus(48, 16)).axis_gap, 1e-9);  // rotation symmetry about its axis
+  // An 8 x 3 rectangle: second moments 64 / 12, 9 / 12 and 0, gaps 55 / 64 and 9 / 64.
+  EXPECT_NEAR(canonical_copy(make_grid(8, 3)).axis_gap, 9.0 / 64.0, 1e-12);
+  const Mesh empty;
+  EXPECT_EQ(canonical_copy(empty).axis_gap, 0.0);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include "reebkit/mesh/decimation.h"
 #include "reebkit/mesh/mesh_topology.h"
 #include "reebkit/mesh/shape_dna.h"
+#include "reebkit/mesh/transform.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,48 +25,46 @@ void squash(const ShapeDna& dna, int n, double* out) {
   }
 }
 
-/// The triangles of `mesh` that belong to `region` (at least two corners
-/// labelled so), as a mesh of their own (vertices renumbered).
-Mesh region_mesh(const Mesh& mesh, const std::vector<Index>& label, Index region, std::vector<Index>& renumber) {
+/// The triangles of `mesh` listed in `triangles`, as a mesh of their own
+/// (vertices numbered in order of first use). `renumber` holds
+/// kInvalidIndex for every vertex of `mesh`, and does again on return.
+Mesh submesh(const Mesh& mesh, const std::vector<Index>& triangles, std::vector<Index>& renumber) {
   Mesh out;
   out.source = mesh.source;
-  std::vector<Index> corners;
-  Index count = 0;
-  for (Index t = 0; t < mesh.num_triangles(); ++t) {
-    int inside = 0;
-    for (int c = 0; c < 3; ++c) inside += label[at(mesh.triangles(t, c))] == region;
-    if (inside < 2) continue;
+  out.triangles.resize(static_cast<Index>(triangles.size()), 3);
+  std::vector<Index> used;
+  for (std::size_t i = 0; i < triangles.size(); ++i)
     for (int c = 0; c < 3; ++c) {
-      Index& v = renumber[at(mesh.triangles(t, c))];
-      if (v == kInvalidIndex) v = count++;
-      corners.push_back(v);
+      const Index v = mesh.triangles(triangles[i], c);
+      if (renumber[at(v)] == kInvalidIndex) {
+        renumber[at(v)] = static_cast<Index>(used.size());
+        used.push_back(v);
+      }
+      out.triangles(static_cast<Index>(i), c) = renumber[at(v)];
     }
+  out.vertices.resize(static_cast<Index>(used.size()), 3);
+  for (std::size_t i = 0; i < used.size(); ++i) {
+    out.vertices.row(static_cast<Index>(i)) = mesh.vertices.row(used[i]);
+    renumber[at(used[i])] = kInvalidIndex;
   }
-  out.vertices.resize(count, 3);
-  out.triangles.resize(static_cast<Index>(corners.size() / 3), 3);
-  for (std::size_t i = 0; i < corners.size(); ++i) out.triangles(static_cast<Index>(i / 3), static_cast<Index>(i % 3)) = corners[i];
-  for (Index v = 0; v < mesh.num_vertices(); ++v)
-    if (renumber[at(v)] != kInvalidIndex) {
-      out.vertices.row(renumber[at(v)]) = mesh.vertices.row(v);
-      renumber[at(v)] = kInvalidIndex;  // ready for the next region
-    }
   return out;
 }
 
-/// The connected piece of `part` with the largest area: the copy's
-/// triangles near a region's border may cut it into pieces (a thin bridge of
-/// triangles with two corners outside), and each further piece would add a
-/// zero eigenvalue, shifting the spectrum by one.
+/// The connected piece of `part` with the largest area: the triangles near
+/// a region's border may cut it into pieces (a thin bridge of triangles with
+/// two corners outside), and each further piece would add a zero
+/// eigenvalue, shifting the spectrum by one.
 Mesh largest_piece(const Mesh& part) {
   const ComponentLabels pieces = connected_components(part.triangles, part.num_vertices());
   if (pieces.count <= 1) return part;
   std::vector<double> area(at(pieces.count), 0.0);
   for (Index t = 0; t < part.num_triangles(); ++t) area[at(pieces.vertex_component[at(part.triangles(t, 0))])] += triangle_area(part, t);
   const Index keep = static_cast<Index>(std::max_element(area.begin(), area.end()) - area.begin());
-  std::vector<Index> label(at(part.num_vertices()));
-  for (Index v = 0; v < part.num_vertices(); ++v) label[at(v)] = pieces.vertex_component[at(v)] == keep ? 0 : 1;
+  std::vector<Index> kept;
+  for (Index t = 0; t < part.num_triangles(); ++t)
+    if (pieces.vertex_component[at(part.triangles(t, 0))] == keep) kept.push_back(t);
   std::vector<Index> renumber(at(part.num_vertices()), kInvalidIndex);
-  return region_mesh(part, label, 0, renumber);
+  return submesh(part, kept, renumber);
 }
 
 }  // namespace
@@ -80,33 +79,53 @@ SurfaceSpectra surface_spectra(const Mesh& mesh, const std::vector<Index>& verte
     if (r < 0 || r >= regions)
       throw InvalidArgument("surface_spectra: " + where + ": region label " + std::to_string(r) + " outside [0, " +
                             std::to_string(regions) + ")");
-  if (options.coarse_vertices < 100 || !(options.min_region_area >= 0.0 && options.min_region_area <= 1.0))
-    throw InvalidArgument("surface_spectra: options out of range (coarse_vertices >= 100, min_region_area in [0, 1])");
-  // Each region's share of the area, its triangles counted as region_mesh counts them.
+  if (options.coarse_vertices < 100 || !(options.min_region_area >= 0.0 && options.min_region_area <= 1.0) ||
+      !(options.min_axis_gap >= 0.0 && options.min_axis_gap <= 1.0))
+    throw InvalidArgument(
+        "surface_spectra: options out of range (coarse_vertices >= 100, min_region_area and min_axis_gap in [0, 1])");
+  // Everything below on the surface's canonical copy (mesh/transform.h):
+  // the decimation follows the frame, the rounding and the order of its
+  // input, the spectrum none of them, so similar copies of a surface get
+  // the same coarse copies and the same values.
+  const CanonicalCopy canonical = canonical_copy(mesh);
+  const Mesh& surface = canonical.mesh;
+  // Each region's triangles (those with at least two corners in it) and its
+  // share of the area.
+  std::vector<std::vector<Index>> region_triangles(at(regions));
   std::vector<double> region_area(at(regions), 0.0);
   double total_area = 0.0;
-  for (Index t = 0; t < mesh.num_triangles(); ++t) {
-    const double area = triangle_area(mesh, t);
+  for (Index t = 0; t < surface.num_triangles(); ++t) {
+    const double area = triangle_area(surface, t);
     total_area += area;
-    const Index a = vertex_region[at(mesh.triangles(t, 0))], b = vertex_region[at(mesh.triangles(t, 1))],
-                c = vertex_region[at(mesh.triangles(t, 2))];
-    if (a == b || a == c) region_area[at(a)] += area;
-    else if (b == c) region_area[at(b)] += area;
+    Index label[3];
+    for (int c = 0; c < 3; ++c) label[c] = vertex_region[at(canonical.original_vertex[at(surface.triangles(t, c))])];
+    const Index r = label[0] == label[1] || label[0] == label[2] ? label[0] : label[1] == label[2] ? label[1] : kInvalidIndex;
+    if (r == kInvalidIndex) continue;
+    region_triangles[at(r)].push_back(t);
+    region_area[at(r)] += area;
   }
 
-  // The coarse copy: the surface decimated to about coarse_vertices.
-  const double ratio = std::min(1.0, static_cast<double>(options.coarse_vertices) / static_cast<double>(mesh.num_vertices()));
-  // (A piece whose decimation leaves a triangle it cannot repair is used as
-  // it is: slower, not wrong.)
+  // The coarse copy of a connected piece: decimated to about
+  // coarse_vertices / #V of its vertices. The piece itself where the frame
+  // is ill-defined (its coarse copies would differ with the rounding: a
+  // quadric collapse's choice between collapses of nearly equal cost, as on
+  // the flat faces of a mechanical part, turns on a change of the last bit),
+  // where the decimation leaves a triangle it cannot repair, or where it
+  // cuts the piece in two (a thin part collapsed: each further piece adds a
+  // zero eigenvalue): slower, not wrong.
+  const double ratio = canonical.axis_gap < options.min_axis_gap
+                           ? 1.0
+                           : std::min(1.0, static_cast<double>(options.coarse_vertices) / static_cast<double>(mesh.num_vertices()));
   const auto coarsened = [ratio](const Mesh& m) {
     if (ratio >= 1.0) return m;
     try {
-      return decimate_mesh(m, {ratio, 0.05}).mesh;
+      Mesh coarse = decimate_mesh(m, {ratio, 0.05}).mesh;
+      if (connected_components(coarse.triangles, coarse.num_vertices()).count == 1) return coarse;
     } catch (const InvalidMeshError&) {
-      return m;
     }
+    return m;
   };
-  const Mesh coarse = coarsened(mesh);
+  const Mesh coarse = coarsened(surface);
 
   SurfaceSpectra out;
   out.global.assign(at(kGlobalSpectrumLength), 0.0);
@@ -114,11 +133,11 @@ SurfaceSpectra surface_spectra(const Mesh& mesh, const std::vector<Index>& verte
   global.eigenvalues = kGlobalSpectrumLength;
   global.margin = 4;
   // The coarse copy; where the operator or the iterations cannot take it,
-  // the surface as given; where they cannot take that either (a handful of
+  // the surface itself; where they cannot take that either (a handful of
   // vertices), zeros, as for a region too small.
-  for (const Mesh* surface : {&coarse, &mesh}) {
+  for (const Mesh* m : {&coarse, &surface}) {
     try {
-      squash(shape_dna(*surface, global), kGlobalSpectrumLength, out.global.data());
+      squash(shape_dna(*m, global), kGlobalSpectrumLength, out.global.data());
       break;
     } catch (const InvalidMeshError&) {
     }
@@ -126,15 +145,15 @@ SurfaceSpectra surface_spectra(const Mesh& mesh, const std::vector<Index>& verte
 
   const int n = kRegionSpectrumLength;
   out.region.assign(at(regions) * at(n), 0.0);
-  std::vector<Index> renumber(at(mesh.num_vertices()), kInvalidIndex);
+  std::vector<Index> renumber(at(surface.num_vertices()), kInvalidIndex);
   ShapeDnaOptions local;
   local.eigenvalues = n;
   local.margin = 2;  // a part of a shape has no symmetry to make its eigenvalues multiple
   for (Index r = 0; r < regions; ++r) {
     if (!(region_area[at(r)] >= options.min_region_area * total_area) || region_area[at(r)] == 0.0) continue;
-    // Cut from the surface as given, then coarsened at the same ratio: a
+    // Cut from the surface before its decimation, then coarsened at the same ratio: a
     // border cut from the coarse copy would zig-zag with the collapses.
-    const Mesh part = coarsened(largest_piece(region_mesh(mesh, vertex_region, r, renumber)));
+    const Mesh part = coarsened(largest_piece(submesh(surface, region_triangles[at(r)], renumber)));
     if (part.num_vertices() < n + 2) continue;
     try {
       squash(shape_dna(part, local), n, out.region.data() + at(r) * at(n));

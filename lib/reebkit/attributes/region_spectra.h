@@ -17,10 +17,15 @@
 // the signature's nearest-neighbour search expect.
 //
 // Cost: the spectra are computed on a copy of the surface decimated to about
-// SpectraOptions::coarse_vertices vertices (mesh/decimation.h, whose kept
-// vertices carry their region labels): the lowest eigenvalues describe the
-// shape at the scale of its parts, which the coarse copy keeps, and the
-// solver's time grows with the vertex count.
+// SpectraOptions::coarse_vertices vertices (mesh/decimation.h), and on each
+// region cut from the surface and decimated at the same ratio: the lowest
+// eigenvalues describe the shape at the scale of its parts, which the coarse
+// copy keeps, and the solver's time grows with the vertex count. A
+// decimation depends on the frame, the rounding and the vertex order of its
+// input, so it is done on the surface's canonical copy (canonical_copy,
+// mesh/transform.h), which similar copies share: the values are the same for
+// every similar copy of a surface whose frame is well-defined, and computed
+// on the surface itself where it is not.
 #pragma once
 
 #include "reebkit/attributes/graph_record.h"
@@ -34,9 +39,15 @@ struct SpectraOptions {
   /// The surface is decimated to about this many vertices before its spectra
   /// are computed (a smaller mesh is used as it is). >= 100.
   Index coarse_vertices = 1500;
+  /// The surface is used as it is, not decimated, when the gap between the
+  /// second moments about its principal axes (CanonicalCopy::axis_gap,
+  /// mesh/transform.h) is below this: its frame, hence its coarse copy,
+  /// would turn with the rounding of its input. In [0, 1]; 0 always
+  /// decimates.
+  double min_axis_gap = 1e-3;
   /// A region with less than this share of the surface's area (counted on
-  /// the surface as given, so that the decision does not move with the
-  /// decimation) gets zeros: too few coarse vertices to resolve its first
+  /// the surface before the decimation, so that the decision does not move
+  /// with it) gets zeros: too few coarse vertices to resolve its first
   /// eigenvalues (about coarse_vertices x share). In [0, 1].
   double min_region_area = 0.01;
 };

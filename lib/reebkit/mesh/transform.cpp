@@ -1,6 +1,11 @@
 #include "reebkit/mesh/transform.h"
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
+
+#include <algorithm>
+#include <array>
+#include <numeric>
 
 #include <cmath>
 #include <random>
@@ -35,6 +40,85 @@ Mesh transformed(const Mesh& mesh, const Similarity& transform) {
   const Eigen::Matrix3d m = transform.scale * transform.rotation;
   for (Eigen::Index v = 0; v < out.vertices.rows(); ++v)
     out.vertices.row(v) = (m * mesh.vertices.row(v).transpose() + transform.translation).transpose();
+  return out;
+}
+
+CanonicalCopy canonical_copy(const Mesh& mesh) {
+  // Moments of the surface: each triangle's integrals of 1, x and x x^T
+  // (exact for the linear triangle: area / 12 (sum v_i v_i^T + s s^T), s the
+  // sum of its corners), about the first vertex to keep them small.
+  const Vec3 origin = mesh.num_vertices() > 0 ? Vec3(mesh.vertices.row(0)) : Vec3::Zero();
+  double area = 0.0;
+  Vec3 first = Vec3::Zero();
+  Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
+  for (Index t = 0; t < mesh.num_triangles(); ++t) {
+    const double a = triangle_area(mesh, t);
+    Vec3 sum = Vec3::Zero();
+    Eigen::Matrix3d outer = Eigen::Matrix3d::Zero();
+    for (int c = 0; c < 3; ++c) {
+      const Vec3 p = mesh.vertices.row(mesh.triangles(t, c)).transpose() - origin;
+      sum += p;
+      outer += p * p.transpose();
+    }
+    area += a;
+    first += a / 3.0 * sum;
+    second += a / 12.0 * (outer + sum * sum.transpose());
+  }
+  CanonicalCopy out;
+  if (!(area > 0.0)) {
+    out.mesh = mesh;
+    out.original_vertex.resize(static_cast<std::size_t>(mesh.num_vertices()));
+    std::iota(out.original_vertex.begin(), out.original_vertex.end(), Index{0});
+    return out;
+  }
+  const Vec3 centroid = first / area;
+  const Eigen::Matrix3d covariance = second / area - centroid * centroid.transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> axes(covariance);  // ascending
+  const Vec3 moment = axes.eigenvalues();
+  out.axis_gap = moment(2) > 0.0 ? std::min(moment(2) - moment(1), moment(1) - moment(0)) / moment(2) : 0.0;
+  Eigen::Matrix3d frame;
+  for (int d = 0; d < 3; ++d) frame.row(d) = axes.eigenvectors().col(2 - d).transpose() / std::sqrt(area);
+  const auto place = [&](Index v) -> Vec3 { return frame * (mesh.vertices.row(v).transpose() - origin - centroid); };
+  // Third moments about each axis, from the triangle centroids.
+  Vec3 third = Vec3::Zero();
+  for (Index t = 0; t < mesh.num_triangles(); ++t) {
+    const Vec3 c = (place(mesh.triangles(t, 0)) + place(mesh.triangles(t, 1)) + place(mesh.triangles(t, 2))) / 3.0;
+    third += triangle_area(mesh, t) * c.cwiseProduct(c).cwiseProduct(c);
+  }
+  for (int d = 0; d < 3; ++d)
+    if (third(d) < 0.0) frame.row(d) *= -1.0;
+
+  const Index n = mesh.num_vertices();
+  std::vector<std::array<double, 3>> position(static_cast<std::size_t>(n));
+  for (Index v = 0; v < n; ++v) {
+    const Vec3 p = place(v);
+    std::array<double, 3>& snapped = position[static_cast<std::size_t>(v)];
+    for (int d = 0; d < 3; ++d) snapped[static_cast<std::size_t>(d)] = std::ldexp(std::nearbyint(std::ldexp(p(d), 20)), -20);
+  }
+  out.original_vertex.resize(static_cast<std::size_t>(n));
+  std::iota(out.original_vertex.begin(), out.original_vertex.end(), Index{0});
+  std::stable_sort(out.original_vertex.begin(), out.original_vertex.end(),
+                   [&](Index a, Index b) { return position[static_cast<std::size_t>(a)] < position[static_cast<std::size_t>(b)]; });
+  std::vector<Index> new_id(static_cast<std::size_t>(n));
+  out.mesh.source = mesh.source;
+  out.mesh.vertices.resize(n, 3);
+  if (!mesh.source_vertex.empty()) out.mesh.source_vertex.resize(static_cast<std::size_t>(n));
+  for (Index v = 0; v < n; ++v) {
+    const Index from = out.original_vertex[static_cast<std::size_t>(v)];
+    new_id[static_cast<std::size_t>(from)] = v;
+    if (!mesh.source_vertex.empty()) out.mesh.source_vertex[static_cast<std::size_t>(v)] = mesh.source_index(from);
+    for (int d = 0; d < 3; ++d) out.mesh.vertices(v, d) = position[static_cast<std::size_t>(from)][static_cast<std::size_t>(d)];
+  }
+  std::vector<std::array<Index, 3>> triangles(static_cast<std::size_t>(mesh.num_triangles()));
+  for (Index t = 0; t < mesh.num_triangles(); ++t) {
+    std::array<Index, 3>& k = triangles[static_cast<std::size_t>(t)];
+    for (int c = 0; c < 3; ++c) k[static_cast<std::size_t>(c)] = new_id[static_cast<std::size_t>(mesh.triangles(t, c))];
+    std::rotate(k.begin(), std::min_element(k.begin(), k.end()), k.end());  // the orientation kept
+  }
+  std::sort(triangles.begin(), triangles.end());
+  out.mesh.triangles.resize(mesh.num_triangles(), 3);
+  for (Index t = 0; t < mesh.num_triangles(); ++t)
+    for (int c = 0; c < 3; ++c) out.mesh.triangles(t, c) = triangles[static_cast<std::size_t>(t)][static_cast<std::size_t>(c)];
   return out;
 }
 

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <random>
+#include <vector>
 
 namespace reebkit {
 
@@ -30,5 +31,35 @@ Similarity random_similarity(const Mesh& mesh, std::mt19937_64& rng);
 
 /// A copy of `mesh` with every vertex transformed; connectivity unchanged.
 Mesh transformed(const Mesh& mesh, const Similarity& transform);
+
+/// A mesh in a frame of its own (canonical_copy).
+struct CanonicalCopy {
+  Mesh mesh;
+  /// #V of `mesh`: the vertex of the input that vertex v is.
+  std::vector<Index> original_vertex;
+  /// The smaller gap between consecutive second moments of the surface
+  /// about its principal axes, relative to the largest, in [0, 1]: where it
+  /// is small the axes are ill-defined (a shape with a symmetry axis, a
+  /// sphere), and they turn with the rounding of the input.
+  double axis_gap = 0.0;
+};
+
+/// `mesh` in a frame of its own, so that its similar copies (any rotation,
+/// reflection, translation and uniform scale, any vertex and triangle order)
+/// give the same copy, for computations that depend on the frame, the
+/// rounding or the order (a decimation) but should not: the area centroid at
+/// the origin, unit area, the principal axes of the surface's second moments
+/// as x, y, z (largest first), each pointing to the side of positive third
+/// moment (the normalization of Vranic and Saupe's feature vectors for 3D
+/// retrieval, "Tools for 3D-object retrieval: Karhunen-Loeve transform and
+/// spherical harmonics", MMSP 2001, with area weights); each coordinate then
+/// rounded to a multiple of 2^-20, so that copies that differ only by
+/// rounding agree in every bit (but for the rare coordinate near half a
+/// step), the vertices sorted by position and the triangles by vertex (each
+/// rotated to start at its smallest). Where two second moments nearly tie
+/// (a small axis_gap) copies may differ by a rotation, and where a third
+/// moment vanishes (a mirror symmetry) by a reflection. A mesh without area
+/// is returned as it is, with axis_gap 0.
+CanonicalCopy canonical_copy(const Mesh& mesh);
 
 }  // namespace reebkit
