@@ -14,27 +14,33 @@
 namespace reebkit {
 namespace {
 
+// One multi-source pass gives the distance to the nearest feature point: with
+// Dijkstra exactly the smallest single-source distance; with fast marching
+// (whose triangle updates take both corners from one source) the same but
+// where two fronts meet, within 1e-3 of the normalization (measured: one
+// vertex of this torus, by 2.6e-4).
 TEST(QuotientFunction, IsOneMinusNormalizedDistanceToNearestFeature) {
   const MeshGraph g = build_mesh_graph(make_torus(40, 14));
   const std::vector<Index> features = {0, 211, 333};
   for (const Geodesic method : {Geodesic::Dijkstra, Geodesic::FastMarching}) {
-  SCOPED_TRACE(geodesic_name(method));
-  const QuotientFunction fq = quotient_function(g, features, method);
-  std::vector<DistanceField> single;
-  for (const Index f : features) single.push_back(geodesic_distances(g, {f}, method));
-  double max_min = 0;
-  for (Index v = 0; v < g.num_vertices(); ++v) {
-    double m = single[0].distance[v];
-    for (const auto& s : single) m = std::min(m, s.distance[v]);
-    max_min = std::max(max_min, m);
-  }
-  EXPECT_DOUBLE_EQ(fq.normalization, max_min);
-  for (Index v = 0; v < g.num_vertices(); ++v) {
-    const double nearest = single[fq.nearest_feature[v]].distance[v];
-    EXPECT_NEAR(fq.value[v], 1.0 - nearest / max_min, 0.5 / 16777216.0 + 1e-15);  // rounded to 2^-24
-    EXPECT_EQ(std::round(fq.value[v] * 16777216.0), fq.value[v] * 16777216.0);
-    for (const auto& s : single) EXPECT_LE(nearest, s.distance[v]);  // eq. (8): the closest one
-  }
+    SCOPED_TRACE(geodesic_name(method));
+    const double slack = method == Geodesic::Dijkstra ? 1e-15 : 1e-3;
+    const QuotientFunction fq = quotient_function(g, features, method);
+    std::vector<DistanceField> single;
+    for (const Index f : features) single.push_back(geodesic_distances(g, {f}, method));
+    double max_min = 0;
+    for (Index v = 0; v < g.num_vertices(); ++v) {
+      double m = single[0].distance[v];
+      for (const auto& s : single) m = std::min(m, s.distance[v]);
+      max_min = std::max(max_min, m);
+    }
+    EXPECT_NEAR(fq.normalization, max_min, slack * max_min);
+    for (Index v = 0; v < g.num_vertices(); ++v) {
+      const double nearest = single[fq.nearest_feature[v]].distance[v];
+      EXPECT_NEAR(fq.value[v], 1.0 - nearest / max_min, 0.5 / 16777216.0 + slack);  // rounded to 2^-24
+      EXPECT_EQ(std::round(fq.value[v] * 16777216.0), fq.value[v] * 16777216.0);
+      for (const auto& s : single) EXPECT_LE(nearest, s.distance[v] + slack * max_min);  // eq. (8): the closest one
+    }
   }
 }
 

@@ -194,7 +194,8 @@ FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOption
   // Eq. (6): v belongs to F when an extremum of f1 and one of f2 lie within
   // epsilon of it, and no feature point already taken lies within epsilon.
   const double radius = options.epsilon * out.diameter, radius_units = std::round(options.epsilon / kTieGrid);
-  const GeodesicOptions near{radius};
+  GeodesicOptions near{radius};
+  near.separate_sources = true;  // the extrema are points
   const std::vector<double> to_e1 = snapped(solver.run(out.extrema1, near).distance);
   const std::vector<double> to_e2 = snapped(solver.run(out.extrema2, near).distance);
   std::vector<Index> candidates;

@@ -12,7 +12,9 @@ QuotientFunction quotient_function(const MeshGraph& graph, const std::vector<Ind
 
 QuotientFunction quotient_function(GeodesicSolver& solver, const std::vector<Index>& features) {
   if (features.empty()) throw InvalidArgument("quotient_function: no feature points");
-  solver.run(features);
+  GeodesicOptions points;
+  points.separate_sources = true;
+  solver.run(features, points);
   DistanceField d = solver.release();
   if (d.reached != solver.graph().num_vertices())
     throw InvalidArgument("quotient_function: the mesh graph is not connected");

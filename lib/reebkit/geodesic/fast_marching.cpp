@@ -190,6 +190,7 @@ const DistanceField& FastMarchingSolver::run(const std::vector<Index>& sources, 
   const std::uint8_t* link_next = graph_.link_next.data();
   const double* link_length = link_length_.data();
   std::uint8_t* alive = alive_.data();
+  const bool separate = options.separate_sources;
   while (!heap_.empty()) {
     const auto [d, v] = heap_.pop();
     if (alive[v] || d > dist[v]) continue;  // stale entry
@@ -201,14 +202,16 @@ const DistanceField& FastMarchingSolver::run(const std::vector<Index>& sources, 
       if (alive[w] || (labels && labels[w] != options.label)) continue;
       double best = std::min(d + length[i], dist[w]);
       Index source = best < dist[w] ? nearest[v] : kInvalidIndex;
-      // The triangles (v, w, u) on either side of the edge vw, u settled.
-      // Settled vertices carry the label, so the restriction holds as is.
+      // The triangles (v, w, u) on either side of the edge vw, u settled
+      // (from the same source, for separate sources: a plane wave through
+      // the fronts of two would cut the corner between them). Settled
+      // vertices carry the label, so the restriction holds as is.
       const Index prev = i > first ? i - 1 : last, next = i < last ? i + 1 : first;
       const Index sides[2][2] = {{prev, prev}, {next, i}};  // (slot of u, link slot)
       for (const auto& [j, link] : sides) {
         if (!link_next[link]) continue;
         const Index u = neighbor[j];
-        if (!alive[u]) continue;
+        if (!alive[u] || (separate && nearest[u] != nearest[v])) continue;
         double t;
         bool nearer_v;
         if (triangle_update(d, dist[u], length[i], link_length[link], length[j], best, t, nearer_v) && t < best) {
@@ -222,7 +225,7 @@ const DistanceField& FastMarchingSolver::run(const std::vector<Index>& sources, 
          ++k) {
       const VirtualTriangle& vt = virtual_[static_cast<std::size_t>(k)];
       const Index w = vt.target, u = vt.other;
-      if (alive[w] || !alive[u]) continue;
+      if (alive[w] || !alive[u] || (separate && nearest[u] != nearest[v])) continue;
       if (labels && (labels[w] != options.label || vt.strip_vertex == kInvalidIndex ||
                      labels[vt.strip_vertex] != options.label))
         continue;

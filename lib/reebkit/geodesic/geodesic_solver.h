@@ -42,6 +42,13 @@ struct GeodesicOptions {
   /// vertex. Holds #V labels; every source must carry `label`.
   const std::vector<Index>* labels = nullptr;
   Index label = 0;
+  /// The sources are separate points, and a vertex's distance is that to
+  /// the nearest of them (eq. 8's nearest feature point): fast marching then
+  /// never combines two sources' fronts in one triangle, which would cut the
+  /// corner between them. false (default): the sources sample one front (a
+  /// curve, a region), whose neighbouring samples' fronts combine into one
+  /// (a plane wave from a line of sources). Dijkstra is the same either way.
+  bool separate_sources = false;
 };
 
 /// Result of a (multi-source) geodesic pass.
