@@ -271,12 +271,13 @@ int rigid(const fs::path& out, const fs::path& dir, const fs::path& cla, int sim
     const std::string& name = models[k].first;
     try {  // an exception may not leave the parallel loop
       const Mesh mesh = load_mesh(models[k].second).components.front();
-      const Analysed a = analyse(mesh, Geodesic::Dijkstra);
+      const Geodesic method = base_options.features.geodesic;  // the default, fast marching
+      const Analysed a = analyse(mesh, method);
       records[k] = a.record;
       std::string rows;
       for (int s = 1; s <= similarities; ++s) {
         const Similarity similarity = random_similarity(mesh, static_cast<std::uint64_t>(s));
-        const Analysed b = analyse(transformed(mesh, similarity), Geodesic::Dijkstra);
+        const Analysed b = analyse(transformed(mesh, similarity), method);
         double attribute = 0;  // largest difference of a node or edge attribute or signature entry
         const bool same_shape = b.record.node_attributes.size() == a.record.node_attributes.size() &&
                                 b.record.edge_attributes.size() == a.record.edge_attributes.size();
@@ -314,13 +315,13 @@ int rigid(const fs::path& out, const fs::path& dir, const fs::path& cla, int sim
       }
       const std::vector<Index> ours = surface_features(a.analysis);
       const double diameter = a.analysis.features.diameter;
-      FeatureOptions fmm_features;
-      fmm_features.geodesic = Geodesic::FastMarching;
-      const std::size_t fmm_count = extract_feature_points(a.analysis.graph, fmm_features).vertices.size();
+      FeatureOptions dijkstra_features = base_options.features;
+      dijkstra_features.geodesic = Geodesic::Dijkstra;
+      const std::size_t dijkstra_count = extract_feature_points(a.analysis.graph, dijkstra_features).vertices.size();
       char line[512];
       std::snprintf(line, sizeof line, "%s,%d,%d,%d,%zu,%zu,%zu,%.4f,%.4f,%.4f,%.4f\n", name.c_str(),
                     a.analysis.reeb.num_nodes(), a.analysis.reeb.leaf_count(), a.analysis.reeb.independent_cycles(),
-                    ours.size(), fmm_count, hand.size(),
+                    ours.size(), dijkstra_count, hand.size(),
                     share_within(a.analysis.graph, ours, hand, 0.05 * diameter),
                     share_within(a.analysis.graph, hand, ours, 0.05 * diameter),
                     share_within(a.analysis.graph, ours, hand, 0.10 * diameter),
@@ -335,7 +336,7 @@ int rigid(const fs::path& out, const fs::path& dir, const fs::path& cla, int sim
   std::ofstream r(out / "rigid.csv"), m(out / "shrec_meshes.csv"), p(out / "shrec_pairs.csv");
   r << "mesh,similarity,scale,same_diameter_ends,same_extrema,extrema1,variant_extrema1,extrema2,variant_extrema2,"
        "same_features,same_graph,same_attribute_shape,max_attribute_difference\n";
-  m << "mesh,nodes,leaves,cycles,features,features_fmm,handpicked,precision05,recall05,precision10,recall10\n";
+  m << "mesh,nodes,leaves,cycles,features,features_dijkstra,handpicked,precision05,recall05,precision10,recall10\n";
   for (std::size_t k = 0; k < models.size(); ++k) r << rigid_rows[k], m << mesh_rows[k];
   p << "a,b,distance\n";
   const std::vector<MatchableGraph> graphs = make_matchable_graphs(records);
