@@ -62,7 +62,7 @@ struct MatchingOptions {
   double spectrum_weight = 8.0;          ///< weight of r(i, j)
   double global_spectrum_weight = 8.0;   ///< weight of g_s(A, B)
   double unmatched_cost = 1.5;     ///< cost of deleting or inserting a node, per unit of node weight
-  double min_node_weight = 0.05;   ///< added to the relative area so that area-less nodes still count
+  double min_node_weight = 0.01;   ///< added to the relative area so that area-less nodes still count
   /// Rounds of edge-consistency refinement: the assignment is solved again
   /// with e(i, j) from the previous correspondence (the first solve has e =
   /// 0), until it no longer changes. 0: one solve, node costs only.
