@@ -151,17 +151,18 @@ FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOption
     // end, no extra sweeps); its v_s1 then starts a sweep in the chosen
     // metric, with ties on the grid of the extrema below, so that the ends
     // are extrema of f1 and f2 as they classify them.
-    const int search_passes = [&] {
+    Index start = kInvalidIndex;
+    int search_passes = 0;
+    {  // the search's fields are freed before the sweep
       DijkstraSolver search(graph);
       const DiameterEnds found = search_diameter_ends(search, options, 0, true);
-      ends.s1 = found.s1;
-      return found.passes;
-    }();
-    ends = find_diameter_ends(solver, ends.s1, options.max_extra_sweeps, {true, true});
+      start = found.s1;
+      search_passes = found.passes;
+    }
+    ends = find_diameter_ends(solver, start, options.max_extra_sweeps, {true, true});
     ends.passes += search_passes;
   }
-  const int passes = ends.passes;
-  out.sweeps = passes;
+  out.sweeps = ends.passes;
   const Index s1 = ends.s1, s2 = ends.s2;
   out.source1 = s1;
   out.source2 = s2;
