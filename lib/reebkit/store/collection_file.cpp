@@ -34,9 +34,12 @@
 #include <cmath>
 #include <cstring>
 #include <ctime>
+#include <functional>
 #include <limits>
 #include <new>
+#include <stdexcept>
 #include <thread>
+#include <type_traits>
 #include <unordered_map>
 
 namespace reebkit {
@@ -143,9 +146,12 @@ struct Table {
   H5::DataType type;
   hsize_t width = 0;
   hsize_t rows = 0;
+  /// Rows the writer buffered and has not written yet (row-major bytes).
+  std::vector<char> pending;
 
   int rank() const { return width == 0 ? 1 : 2; }
   hsize_t columns() const { return std::max<hsize_t>(width, 1); }
+  std::size_t row_bytes() const { return columns() * type.getSize(); }
 
   /// Appends `n` rows from `data` (row-major).
   void append(const void* data, hsize_t n) {
@@ -180,6 +186,19 @@ struct Table {
     read(out.data(), first, n);
     return out;
   }
+
+  /// Rows [first, first + n) as bytes.
+  std::vector<char> read_rows(hsize_t first, hsize_t n) const {
+    std::vector<char> out(static_cast<std::size_t>(n) * row_bytes());
+    read(out.data(), first, n);
+    return out;
+  }
+
+  /// Appends the pending rows.
+  void write_pending() {
+    append(pending.data(), pending.size() / row_bytes());
+    pending.clear();
+  }
 };
 
 /// Offsets read from the file, checked before they size anything: they never
@@ -188,32 +207,6 @@ void check_offsets(const std::vector<std::int64_t>& offsets, hsize_t rows, const
   if (offsets.empty() || offsets.front() < 0 || !std::is_sorted(offsets.begin(), offsets.end()) ||
       static_cast<hsize_t>(offsets.back()) > rows)
     throw H5::DataSetIException("read", std::string(name) + " decreases or points past its data");
-}
-
-/// The strings [first, first + n) of a text column: their UTF-8 bytes one
-/// after the other in `bytes` (uint8), string k ending at row `ends[k]`
-/// (`ends` has one row more: the leading 0).
-std::vector<std::string> read_text(const Table& bytes, const Table& ends, const char* name, hsize_t first, hsize_t n) {
-  const auto offset = ends.read_vector<std::int64_t>(first, n + 1);
-  check_offsets(offset, bytes.rows, name);
-  const auto text = bytes.read_vector<char>(offset.front(), offset.back() - offset.front());
-  std::vector<std::string> out;
-  out.reserve(static_cast<std::size_t>(n));
-  for (std::size_t k = 0; k < n; ++k)
-    out.emplace_back(text.data() + (offset[k] - offset.front()), text.data() + (offset[k + 1] - offset.front()));
-  return out;
-}
-
-/// Appends `strings` to a text column (see read_text).
-void append_text(Table& bytes, Table& ends, const std::vector<std::string>& strings) {
-  std::string packed;
-  std::vector<std::int64_t> offset;
-  for (const std::string& s : strings) {
-    packed += s;
-    offset.push_back(static_cast<std::int64_t>(bytes.rows + packed.size()));
-  }
-  bytes.append(packed.data(), packed.size());
-  ends.append(offset.data(), offset.size());
 }
 
 /// An attribute of fixed-length strings (text_type): a scalar (one value)
@@ -362,11 +355,6 @@ void read_classes(const H5::H5File& file, Provenance& provenance) {
   provenance.classes_file = read_string_attribute(group, "file");
 }
 
-template <std::size_t N>
-void write_columns_attribute(H5::DataSet& dataset, const std::array<const char*, N>& names) {
-  write_text_attribute(dataset, "columns", std::vector<std::string>(names.begin(), names.end()), false);
-}
-
 std::string utc_now() {
   const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
   std::tm utc{};
@@ -376,83 +364,203 @@ std::string utc_now() {
   return text;
 }
 
-/// Every dataset of the layout, by role.
+/// What the rows of a dataset are: each entry adds one row to kEntry and
+/// rows of its own to each other part (the bytes of its name, its nodes,
+/// ...), which an offsets dataset indexes.
+enum Part : int {
+  kEntry, kNameByte, kClassByte, kErrorByte, kNode, kEdge, kFeaturePoint, kSkeletonPoint, kPartCount
+};
+
+/// A dataset of the layout: its name, element type and columns, what its
+/// rows are and how an entry's rows are made and read back. Either the
+/// values of a part (`put`, `take`) or the offsets into one (`indexes`).
+struct Dataset {
+  const char* name = "";
+  const H5::PredType* type = nullptr;  ///< in the file and in memory
+  std::vector<std::string> columns;    ///< of a 2-D dataset (its `columns` attribute); none: 1-D
+  Part part = kEntry;                  ///< what one of its rows is
+  /// Offsets: one row more than `part` has (a leading 0), row r + 1 the
+  /// number of rows of `indexes` up to the end of row r of `part`. kEntry:
+  /// a values dataset.
+  Part indexes = kEntry;
+  /// Offsets of a part other than kEntry: the entry's own offsets into
+  /// `indexes`, #rows of `part` + 1 from 0 (empty: no rows of `indexes`).
+  std::vector<std::int64_t> GraphRecord::*local = nullptr;
+  /// Values: appends the entry's rows (row-major bytes) to `rows`, and sets
+  /// them back from its `count` values at `data`.
+  std::function<void(const GraphRecord& entry, std::vector<char>& rows)> put;
+  std::function<void(GraphRecord& entry, const char* data, std::size_t count)> take;
+
+  bool is_offsets() const { return indexes != kEntry; }
+};
+
+/// The HDF5 type of the numbers T (char: the UTF-8 bytes of a string).
+template <typename T>
+const H5::PredType& type_of() {
+  if constexpr (std::is_same_v<T, char>)
+    return H5::PredType::NATIVE_UINT8;
+  else if constexpr (std::is_same_v<T, std::int8_t>)
+    return H5::PredType::NATIVE_INT8;
+  else if constexpr (std::is_same_v<T, std::int32_t>)
+    return H5::PredType::NATIVE_INT32;
+  else if constexpr (std::is_same_v<T, std::int64_t>)
+    return H5::PredType::NATIVE_INT64;
+  else if constexpr (std::is_same_v<T, std::uint64_t>)
+    return H5::PredType::NATIVE_UINT64;
+  else {
+    static_assert(std::is_same_v<T, double>, "a number type of the layout");
+    return H5::PredType::NATIVE_DOUBLE;
+  }
+}
+
+/// The numbers a record member holds: itself, or the elements of a vector,
+/// an array or a string.
+template <typename M>
+struct Element {
+  using type = M;
+};
+template <typename T>
+struct Element<std::vector<T>> {
+  using type = T;
+};
+template <typename T, std::size_t N>
+struct Element<std::array<T, N>> {
+  using type = T;
+};
+template <>
+struct Element<std::string> {
+  using type = char;
+};
+
+template <typename M>
+void resize_to(M& values, std::size_t count) {
+  values.resize(count);
+}
+template <typename T, std::size_t N>
+void resize_to(std::array<T, N>&, std::size_t) {}  // as wide as its dataset
+
+void append_bytes(std::vector<char>& rows, const void* data, std::size_t bytes) {
+  const char* first = static_cast<const char*>(data);
+  rows.insert(rows.end(), first, first + bytes);
+}
+
+Dataset make_dataset(const char* name, const H5::PredType& type, Part part) {
+  Dataset d;
+  d.name = name;
+  d.type = &type;
+  d.part = part;
+  return d;
+}
+
+/// The values of the record's `member` (a number, or a vector, array or
+/// string of them), one row of `columns` values per row of `part`.
+template <typename M, std::size_t N = 0>
+Dataset values(const char* name, Part part, M GraphRecord::*member, const std::array<const char*, N>& columns = {}) {
+  using T = typename Element<M>::type;
+  Dataset d = make_dataset(name, type_of<T>(), part);
+  d.columns.assign(columns.begin(), columns.end());
+  d.put = [member](const GraphRecord& entry, std::vector<char>& rows) {
+    const M& m = entry.*member;
+    if constexpr (std::is_arithmetic_v<M>)
+      append_bytes(rows, &m, sizeof m);
+    else
+      append_bytes(rows, m.data(), m.size() * sizeof(T));
+  };
+  d.take = [member](GraphRecord& entry, const char* data, std::size_t count) {
+    M& m = entry.*member;
+    if constexpr (std::is_arithmetic_v<M>) {
+      std::copy_n(data, sizeof m, reinterpret_cast<char*>(&m));
+    } else {
+      resize_to(m, count);
+      std::copy_n(data, count * sizeof(T), reinterpret_cast<char*>(m.data()));
+    }
+  };
+  return d;
+}
+
+/// `status`: 0 for an entry with a graph, 1 for a failed one.
+Dataset status_values() {
+  Dataset d = make_dataset("status", type_of<std::int8_t>(), kEntry);
+  d.put = [](const GraphRecord& entry, std::vector<char>& rows) { rows.push_back(entry.ok ? 0 : 1); };
+  d.take = [](GraphRecord& entry, const char* data, std::size_t) { entry.ok = data[0] == 0; };
+  return d;
+}
+
+/// The offsets of the rows of `indexes`, per row of `part`.
+Dataset offsets(const char* name, Part part, Part indexes, std::vector<std::int64_t> GraphRecord::*local = nullptr) {
+  Dataset d = make_dataset(name, type_of<std::int64_t>(), part);
+  d.indexes = indexes;
+  d.local = local;
+  return d;
+}
+
+/// Every dataset of the layout (docs/collection-file.md), in the order the
+/// file creates them; the offsets of a part come before any offsets into
+/// it. The writer, the reader and resume follow this table: a dataset is
+/// one row.
+const std::vector<Dataset>& datasets() {
+  static const std::vector<Dataset> table = {
+      values("name", kNameByte, &GraphRecord::name),
+      offsets("name_offset", kEntry, kNameByte),
+      values("class", kClassByte, &GraphRecord::class_label),
+      offsets("class_offset", kEntry, kClassByte),
+      values("error", kErrorByte, &GraphRecord::error),
+      offsets("error_offset", kEntry, kErrorByte),
+      values("content_hash", kEntry, &GraphRecord::content_hash),
+      values("vertices", kEntry, &GraphRecord::vertices),
+      values("faces", kEntry, &GraphRecord::faces),
+      status_values(),
+      values("timings", kEntry, &GraphRecord::timings, kTimeColumnNames),
+      values("signature", kEntry, &GraphRecord::signature, kSignatureNames),
+      offsets("node_offset", kEntry, kNode),
+      offsets("edge_offset", kEntry, kEdge),
+      offsets("feature_offset", kEntry, kFeaturePoint),
+      values("nodes", kNode, &GraphRecord::nodes, kNodeColumnNames),
+      values("node_geometry", kNode, &GraphRecord::node_geometry, kGeomColumnNames),
+      values("node_attr", kNode, &GraphRecord::node_attributes, kNodeAttributeNames),
+      offsets("skeleton_offset", kNode, kSkeletonPoint, &GraphRecord::skeleton_offset),
+      values("skeleton_points", kSkeletonPoint, &GraphRecord::skeleton_points, kPointColumnNames),
+      values("edges", kEdge, &GraphRecord::edges, kEdgeColumnNames),
+      values("edge_attr", kEdge, &GraphRecord::edge_attributes, kEdgeAttributeNames),
+      values("feature_points", kFeaturePoint, &GraphRecord::feature_points),
+  };
+  return table;
+}
+
+/// The row of datasets() called `name`.
+std::size_t dataset_index(const char* name) {
+  for (std::size_t d = 0; d < datasets().size(); ++d)
+    if (std::strcmp(datasets()[d].name, name) == 0) return d;
+  throw std::logic_error(std::string("no dataset ") + name);
+}
+
+/// The datasets of an open file.
 struct Tables {
-  // per mesh (G rows)
-  Table content_hash, vertices, faces, status, timings, signature;
-  // G + 1 rows
-  Table name_offset, class_offset, error_offset, node_offset, edge_offset, feature_offset;
-  // the bytes of the text columns (see read_text)
-  Table name, class_label, error;
-  // per node (N rows; skeleton_offset N + 1)
-  Table nodes, node_geometry, node_attr, skeleton_offset;
-  Table skeleton_points, edges, edge_attr, feature_points;
+  std::vector<Table> table;  ///< one per row of datasets(), in its order
   /// The number of committed entries: one int64, contiguous, so that a
   /// commit is one 8-byte write in place.
   H5::DataSet count;
+
+  /// The dataset called `name`.
+  const Table& named(const char* name) const { return table[dataset_index(name)]; }
+
+  /// The rows of `part` that every dataset of its values has.
+  hsize_t rows_of(Part part) const {
+    hsize_t rows = std::numeric_limits<hsize_t>::max();
+    for (std::size_t d = 0; d < table.size(); ++d)
+      if (datasets()[d].part == part && !datasets()[d].is_offsets()) rows = std::min(rows, table[d].rows);
+    return rows;
+  }
 };
-
-/// The name, element type and width of each dataset, in Tables order.
-struct TableSpec {
-  Table Tables::*member;
-  const char* name;
-  H5::DataType type;
-  hsize_t width;
-};
-
-std::vector<TableSpec> table_specs() {
-  const H5::PredType& u8 = H5::PredType::NATIVE_UINT8;
-  const H5::PredType& i8 = H5::PredType::NATIVE_INT8;
-  const H5::PredType& i32 = H5::PredType::NATIVE_INT32;
-  const H5::PredType& i64 = H5::PredType::NATIVE_INT64;
-  const H5::PredType& u64 = H5::PredType::NATIVE_UINT64;
-  const H5::PredType& f64 = H5::PredType::NATIVE_DOUBLE;
-  return {
-      {&Tables::name, "name", u8, 0},
-      {&Tables::name_offset, "name_offset", i64, 0},
-      {&Tables::class_label, "class", u8, 0},
-      {&Tables::class_offset, "class_offset", i64, 0},
-      {&Tables::error, "error", u8, 0},
-      {&Tables::error_offset, "error_offset", i64, 0},
-      {&Tables::content_hash, "content_hash", u64, 0},
-      {&Tables::vertices, "vertices", i64, 0},
-      {&Tables::faces, "faces", i64, 0},
-      {&Tables::status, "status", i8, 0},
-      {&Tables::timings, "timings", f64, kTimeColumnCount},
-      {&Tables::signature, "signature", f64, kSignatureLength},
-      {&Tables::node_offset, "node_offset", i64, 0},
-      {&Tables::edge_offset, "edge_offset", i64, 0},
-      {&Tables::feature_offset, "feature_offset", i64, 0},
-      {&Tables::nodes, "nodes", i32, kNodeColumnCount},
-      {&Tables::node_geometry, "node_geometry", f64, kGeomColumnCount},
-      {&Tables::node_attr, "node_attr", f64, kNodeAttributeCount},
-      {&Tables::skeleton_offset, "skeleton_offset", i64, 0},
-      {&Tables::skeleton_points, "skeleton_points", f64, 3},
-      {&Tables::edges, "edges", i32, 2},
-      {&Tables::edge_attr, "edge_attr", f64, kEdgeAttributeCount},
-      {&Tables::feature_points, "feature_points", i32, 0},
-  };
-}
-
-void set_columns(Tables& t) {
-  write_columns_attribute(t.timings.dataset, kTimeColumnNames);
-  write_columns_attribute(t.signature.dataset, kSignatureNames);
-  write_columns_attribute(t.nodes.dataset, kNodeColumnNames);
-  write_columns_attribute(t.node_geometry.dataset, kGeomColumnNames);
-  write_columns_attribute(t.node_attr.dataset, kNodeAttributeNames);
-  write_columns_attribute(t.skeleton_points.dataset, kPointColumnNames);
-  write_columns_attribute(t.edges.dataset, kEdgeColumnNames);
-  write_columns_attribute(t.edge_attr.dataset, kEdgeAttributeNames);
-}
 
 /// Opens every dataset of `file` (reading, or appending after the rows it has).
 Tables open_tables(const H5::H5File& file) {
   Tables tables;
-  for (const TableSpec& spec : table_specs()) {
-    Table& t = tables.*spec.member;
+  for (const Dataset& spec : datasets()) {
+    Table& t = tables.table.emplace_back();
     t.dataset = file.openDataSet(spec.name);
-    t.type = spec.type;
-    t.width = spec.width;
+    t.type = *spec.type;
+    t.width = spec.columns.size();
     hsize_t dims[2] = {0, 0};
     const H5::DataSpace space = t.dataset.getSpace();
     if (space.getSimpleExtentNdims() != t.rank()) throw H5::DataSetIException("open", "unexpected rank");
@@ -462,28 +570,6 @@ Tables open_tables(const H5::H5File& file) {
   }
   tables.count = file.openDataSet("count");
   return tables;
-}
-
-/// Entries buffered since the last write, as the rows they add to each dataset.
-struct Batch {
-  std::vector<std::string> name, class_label, error;
-  std::vector<std::uint64_t> content_hash;
-  std::vector<std::int64_t> vertices, faces;
-  std::vector<std::int8_t> status;
-  std::vector<double> timings, signature;
-  std::vector<std::int64_t> node_offset, edge_offset, feature_offset, skeleton_offset;
-  std::vector<std::int32_t> nodes, edges, feature_points;
-  std::vector<double> node_geometry, node_attr, edge_attr, skeleton_points;
-};
-
-template <typename T>
-void append_to(std::vector<T>& out, const std::vector<T>& rows) {
-  out.insert(out.end(), rows.begin(), rows.end());
-}
-
-template <typename T>
-void append_rows(Table& table, const std::vector<T>& values) {
-  table.append(values.data(), values.size() / table.columns());
 }
 
 void check_entry(const GraphRecord& e, const fs::path& path) {
@@ -525,7 +611,8 @@ struct Snapshot {
   std::vector<std::string> names, class_labels;
   std::vector<std::uint64_t> hashes;
   std::vector<double> signatures;
-  std::vector<std::int64_t> node_offset, edge_offset, feature_offset;
+  /// The offsets (size + 1, checked) into each part an entry has rows of.
+  std::array<std::vector<std::int64_t>, kPartCount> offsets;
   Provenance provenance;
 };
 
@@ -559,22 +646,34 @@ int layout_version(const H5::H5File& file) {
   return version;
 }
 
+/// The strings of the text dataset `name` of the entries of `s`.
+std::vector<std::string> read_strings(const Tables& t, const Snapshot& s, const char* name) {
+  const std::size_t d = dataset_index(name);
+  const std::vector<std::int64_t>& ends = s.offsets[datasets()[d].part];
+  const auto text = t.table[d].read_vector<char>(0, static_cast<hsize_t>(ends.back()));
+  std::vector<std::string> out;
+  for (std::size_t k = 0; k + 1 < ends.size(); ++k) out.emplace_back(text.data() + ends[k], text.data() + ends[k + 1]);
+  return out;
+}
+
 Snapshot read_snapshot(const H5::H5File& file, const Tables& t) {
   Snapshot s;
   t.count.read(&s.size, H5::PredType::NATIVE_INT64);
-  if (s.size < 0 || static_cast<hsize_t>(s.size) >= t.name_offset.rows)
-    throw H5::DataSetIException("read", "count (" + std::to_string(s.size) + ") exceeds the rows written");
-  const auto g = static_cast<hsize_t>(s.size);
-  s.names = read_text(t.name, t.name_offset, "name_offset", 0, g);
-  s.class_labels = read_text(t.class_label, t.class_offset, "class_offset", 0, g);
-  s.hashes = t.content_hash.read_vector<std::uint64_t>(0, g);
-  s.signatures = t.signature.read_vector<double>(0, g);
-  s.node_offset = t.node_offset.read_vector<std::int64_t>(0, g + 1);
-  s.edge_offset = t.edge_offset.read_vector<std::int64_t>(0, g + 1);
-  s.feature_offset = t.feature_offset.read_vector<std::int64_t>(0, g + 1);
-  check_offsets(s.node_offset, t.nodes.rows, "node_offset");
-  check_offsets(s.edge_offset, t.edges.rows, "edge_offset");
-  check_offsets(s.feature_offset, t.feature_points.rows, "feature_offset");
+  const auto g = static_cast<hsize_t>(s.size);  // checked below before it sizes anything
+  for (std::size_t d = 0; d < t.table.size(); ++d) {
+    const Dataset& spec = datasets()[d];
+    if (spec.part != kEntry) continue;
+    if (s.size < 0 || t.table[d].rows < g + (spec.is_offsets() ? 1 : 0))
+      throw H5::DataSetIException("read", "count (" + std::to_string(s.size) + ") exceeds the rows written");
+    if (spec.is_offsets()) {
+      s.offsets[spec.indexes] = t.table[d].read_vector<std::int64_t>(0, g + 1);
+      check_offsets(s.offsets[spec.indexes], t.rows_of(spec.indexes), spec.name);
+    }
+  }
+  s.names = read_strings(t, s, "name");
+  s.class_labels = read_strings(t, s, "class");
+  s.hashes = t.named("content_hash").read_vector<std::uint64_t>(0, g);
+  s.signatures = t.named("signature").read_vector<double>(0, g);
   s.provenance.reebkit_version = read_string_attribute(file, "reebkit_version");
   s.provenance.options = read_string_attribute(file, "options");
   s.provenance.command = read_string_attribute(file, "command");
@@ -608,61 +707,42 @@ OpenCollection open_collection(const fs::path& path) {
 
 /// Entries [first, first + n) read with one call per dataset.
 std::vector<GraphRecord> read_entries(const Tables& t, const Snapshot& s, std::int64_t first, std::int64_t n) {
-  const auto f = static_cast<hsize_t>(first);
-  const auto count = static_cast<hsize_t>(n);
-  const auto node0 = s.node_offset[first], node1 = s.node_offset[first + n];
-  const auto edge0 = s.edge_offset[first], edge1 = s.edge_offset[first + n];
-  const auto feat0 = s.feature_offset[first], feat1 = s.feature_offset[first + n];
-  const auto names = read_text(t.name, t.name_offset, "name_offset", f, count);
-  const auto labels = read_text(t.class_label, t.class_offset, "class_offset", f, count);
-  const auto errors = read_text(t.error, t.error_offset, "error_offset", f, count);
-  const auto hashes = t.content_hash.read_vector<std::uint64_t>(f, count);
-  const auto vertices = t.vertices.read_vector<std::int64_t>(f, count);
-  const auto faces = t.faces.read_vector<std::int64_t>(f, count);
-  const auto status = t.status.read_vector<std::int8_t>(f, count);
-  const auto timings = t.timings.read_vector<double>(f, count);
-  const auto nodes = t.nodes.read_vector<std::int32_t>(node0, node1 - node0);
-  const auto geometry = t.node_geometry.read_vector<double>(node0, node1 - node0);
-  const auto node_attr = t.node_attr.read_vector<double>(node0, node1 - node0);
-  const auto skeleton_offset = t.skeleton_offset.read_vector<std::int64_t>(node0, node1 - node0 + 1);
-  check_offsets(skeleton_offset, t.skeleton_points.rows, "skeleton_offset");
-  const auto point0 = skeleton_offset.front();
-  const auto points = t.skeleton_points.read_vector<double>(point0, skeleton_offset.back() - point0);
-  const auto edges = t.edges.read_vector<std::int32_t>(edge0, edge1 - edge0);
-  const auto edge_attr = t.edge_attr.read_vector<double>(edge0, edge1 - edge0);
-  const auto features = t.feature_points.read_vector<std::int32_t>(feat0, feat1 - feat0);
-
-  // Rows [a, b) of a row-major array of `width` columns starting at row `base`.
-  const auto slice = [](const auto& v, std::int64_t base, std::int64_t a, std::int64_t b, std::int64_t width) {
-    using Vector = std::decay_t<decltype(v)>;
-    return Vector(v.begin() + (a - base) * width, v.begin() + (b - base) * width);
-  };
+  const std::vector<Dataset>& specs = datasets();
   std::vector<GraphRecord> out(static_cast<std::size_t>(n));
-  for (std::int64_t k = 0; k < n; ++k) {
-    const std::int64_t i = first + k;
-    GraphRecord& e = out[static_cast<std::size_t>(k)];
-    const auto sk = static_cast<std::size_t>(k);
-    e.name = names[sk];
-    e.class_label = labels[sk];
-    e.error = errors[sk];
-    e.content_hash = hashes[sk];
-    e.vertices = vertices[sk];
-    e.faces = faces[sk];
-    e.ok = status[sk] == 0;
-    std::copy_n(timings.begin() + k * kTimeColumnCount, kTimeColumnCount, e.timings.begin());
-    e.signature = slice(s.signatures, 0, i, i + 1, kSignatureLength);
-    const auto n0 = s.node_offset[i], n1 = s.node_offset[i + 1];
-    e.nodes = slice(nodes, node0, n0, n1, kNodeColumnCount);
-    e.node_geometry = slice(geometry, node0, n0, n1, kGeomColumnCount);
-    e.node_attributes = slice(node_attr, node0, n0, n1, kNodeAttributeCount);
-    e.skeleton_offset = slice(skeleton_offset, node0, n0, n1 + 1, 1);
-    const std::int64_t local0 = e.skeleton_offset.front();
-    for (std::int64_t& o : e.skeleton_offset) o -= local0;
-    e.skeleton_points = slice(points, point0, local0, local0 + e.skeleton_offset.back(), 3);
-    const auto e0 = s.edge_offset[i], e1 = s.edge_offset[i + 1];
-    e.edges = slice(edges, edge0, e0, e1, 2);
-    e.edge_attributes = slice(edge_attr, edge0, e0, e1, kEdgeAttributeCount);
-    e.feature_points = slice(features, feat0, s.feature_offset[i], s.feature_offset[i + 1], 1);
+  // Entry k's rows of part p: [bounds[p][k], bounds[p][k + 1]).
+  std::array<std::vector<std::int64_t>, kPartCount> bounds;
+  for (std::int64_t k = 0; k <= n; ++k) bounds[kEntry].push_back(first + k);
+  for (std::size_t d = 0; d < specs.size(); ++d) {
+    const Dataset& spec = specs[d];
+    if (!spec.is_offsets()) continue;
+    const std::vector<std::int64_t>& rows = bounds[spec.part];
+    const std::int64_t row0 = rows.front();
+    std::vector<std::int64_t> offset;
+    if (spec.part == kEntry) {
+      offset.assign(s.offsets[spec.indexes].begin() + first, s.offsets[spec.indexes].begin() + first + n + 1);
+    } else {
+      offset = t.table[d].read_vector<std::int64_t>(static_cast<hsize_t>(row0), static_cast<hsize_t>(rows.back() - row0 + 1));
+      check_offsets(offset, t.rows_of(spec.indexes), spec.name);
+    }
+    for (const std::int64_t r : rows) bounds[spec.indexes].push_back(offset[static_cast<std::size_t>(r - row0)]);
+    if (spec.local == nullptr) continue;
+    for (std::size_t k = 0; k < out.size(); ++k) {
+      std::vector<std::int64_t>& local = out[k].*spec.local;
+      local.assign(offset.begin() + (rows[k] - row0), offset.begin() + (rows[k + 1] - row0) + 1);
+      const std::int64_t local0 = local.front();
+      for (std::int64_t& o : local) o -= local0;
+    }
+  }
+  for (std::size_t d = 0; d < specs.size(); ++d) {
+    const Dataset& spec = specs[d];
+    if (spec.is_offsets()) continue;
+    const Table& table = t.table[d];
+    const std::vector<std::int64_t>& rows = bounds[spec.part];
+    const std::int64_t row0 = rows.front();
+    const std::vector<char> data = table.read_rows(static_cast<hsize_t>(row0), static_cast<hsize_t>(rows.back() - row0));
+    for (std::size_t k = 0; k < out.size(); ++k)
+      spec.take(out[k], data.data() + static_cast<std::size_t>(rows[k] - row0) * table.row_bytes(),
+                static_cast<std::size_t>(rows[k + 1] - rows[k]) * table.columns());
   }
   return out;
 }
@@ -727,13 +807,12 @@ struct CollectionWriter::Impl {
   fs::path path;
   H5::H5File file;
   Tables tables;
-  Batch batch;
   std::vector<std::pair<std::string, std::uint64_t>> existing;
   std::int64_t written = 0;    // entries in the datasets
   std::int64_t committed = 0;  // entries counted by `count`
-  std::int64_t buffered = 0;   // entries in `batch`
-  // running totals of the flat arrays, buffered rows included
-  std::int64_t nodes = 0, edges = 0, features = 0, points = 0;
+  std::int64_t buffered = 0;   // entries in the tables' pending rows
+  // the rows of each part, pending rows included
+  std::array<std::int64_t, kPartCount> totals{};
 
   void create(const fs::path& target, const Provenance& provenance);
   void write_batch();
@@ -776,7 +855,6 @@ void CollectionWriter::Impl::abandon() noexcept {
     // that failed while the file was being created): let go of the id.
     new (&file) H5::H5File();
   }
-  batch = Batch{};
   buffered = 0;
 }
 
@@ -828,25 +906,26 @@ void CollectionWriter::Impl::create(const fs::path& target, const Provenance& pr
   for (const NamedOption& option : provenance.analysis_options) write_option_attribute(analysis, option);
   if (!provenance.classes.empty()) write_classes(file, provenance.classes, provenance.classes_file);
 
-  for (const TableSpec& spec : table_specs()) {
-    Table& t = tables.*spec.member;
-    t.type = spec.type;
-    t.width = spec.width;
+  for (const Dataset& spec : datasets()) {
+    Table& t = tables.table.emplace_back();
+    t.type = *spec.type;
+    t.width = spec.columns.size();
     const hsize_t dims[2] = {0, t.width};
     const hsize_t max_dims[2] = {H5S_UNLIMITED, t.width};
-    const hsize_t row_bytes = t.columns() * t.type.getSize();
-    const hsize_t chunk[2] = {std::max<hsize_t>(1, kChunkBytes / row_bytes), t.width};
+    const hsize_t chunk[2] = {std::max<hsize_t>(1, kChunkBytes / t.row_bytes()), t.width};
     H5::DSetCreatPropList properties;
     properties.setChunk(t.rank(), chunk);
     properties.setShuffle();
     properties.setDeflate(kDeflateLevel);
     t.dataset = file.createDataSet(spec.name, t.type, H5::DataSpace(t.rank(), dims, max_dims), properties);
   }
-  set_columns(tables);
+  for (std::size_t d = 0; d < datasets().size(); ++d) {
+    const Dataset& spec = datasets()[d];
+    if (!spec.columns.empty()) write_text_attribute(tables.table[d].dataset, "columns", spec.columns, false);
+  }
   const std::int64_t zero = 0;
-  for (Table* offsets : {&tables.name_offset, &tables.class_offset, &tables.error_offset, &tables.node_offset,
-                         &tables.edge_offset, &tables.feature_offset, &tables.skeleton_offset})
-    offsets->append(&zero, 1);
+  for (std::size_t d = 0; d < datasets().size(); ++d)
+    if (datasets()[d].is_offsets()) tables.table[d].append(&zero, 1);
   const hsize_t one[1] = {1};
   tables.count = file.createDataSet("count", H5::PredType::NATIVE_INT64, H5::DataSpace(1, one));
   tables.count.write(&zero, H5::PredType::NATIVE_INT64);
@@ -863,30 +942,9 @@ void CollectionWriter::Impl::create(const fs::path& target, const Provenance& pr
 
 void CollectionWriter::Impl::write_batch() {
   if (buffered == 0) return;
-  Batch& b = batch;
-  append_text(tables.name, tables.name_offset, b.name);
-  append_text(tables.class_label, tables.class_offset, b.class_label);
-  append_text(tables.error, tables.error_offset, b.error);
-  append_rows(tables.content_hash, b.content_hash);
-  append_rows(tables.vertices, b.vertices);
-  append_rows(tables.faces, b.faces);
-  append_rows(tables.status, b.status);
-  append_rows(tables.timings, b.timings);
-  append_rows(tables.signature, b.signature);
-  append_rows(tables.node_offset, b.node_offset);
-  append_rows(tables.edge_offset, b.edge_offset);
-  append_rows(tables.feature_offset, b.feature_offset);
-  append_rows(tables.nodes, b.nodes);
-  append_rows(tables.node_geometry, b.node_geometry);
-  append_rows(tables.node_attr, b.node_attr);
-  append_rows(tables.skeleton_offset, b.skeleton_offset);
-  append_rows(tables.skeleton_points, b.skeleton_points);
-  append_rows(tables.edges, b.edges);
-  append_rows(tables.edge_attr, b.edge_attr);
-  append_rows(tables.feature_points, b.feature_points);
+  for (Table& t : tables.table) t.write_pending();
   written += buffered;
   buffered = 0;
-  b = Batch{};
 }
 
 void CollectionWriter::Impl::commit() {
@@ -953,35 +1011,29 @@ void CollectionWriter::append(GraphRecord entry) {
   if (w.file.getId() == H5I_INVALID_HID)
     throw InvalidArgument(w.path.string() + ": append after close() or a failed write");
   check_entry(entry, w.path);
-  Batch& b = w.batch;
-  const std::int64_t n = entry.num_nodes();
-  b.name.push_back(std::move(entry.name));
-  b.class_label.push_back(std::move(entry.class_label));
-  b.error.push_back(std::move(entry.error));
-  b.content_hash.push_back(entry.content_hash);
-  b.vertices.push_back(entry.vertices);
-  b.faces.push_back(entry.faces);
-  b.status.push_back(entry.ok ? 0 : 1);
-  b.timings.insert(b.timings.end(), entry.timings.begin(), entry.timings.end());
   if (entry.signature.empty()) entry.signature.assign(kSignatureLength, std::numeric_limits<double>::quiet_NaN());
-  append_to(b.signature, entry.signature);
-  append_to(b.nodes, entry.nodes);
-  append_to(b.node_geometry, entry.node_geometry);
-  append_to(b.node_attr, entry.node_attributes);
-  append_to(b.edges, entry.edges);
-  append_to(b.edge_attr, entry.edge_attributes);
-  append_to(b.feature_points, entry.feature_points);
-  append_to(b.skeleton_points, entry.skeleton_points);
-  for (std::int64_t k = 1; k <= n; ++k)
-    b.skeleton_offset.push_back(
-        w.points + (entry.skeleton_offset.empty() ? 0 : entry.skeleton_offset[static_cast<std::size_t>(k)]));
-  w.points += static_cast<std::int64_t>(entry.skeleton_points.size() / 3);
-  w.nodes += n;
-  w.edges += entry.num_edges();
-  w.features += static_cast<std::int64_t>(entry.feature_points.size());
-  b.node_offset.push_back(w.nodes);
-  b.edge_offset.push_back(w.edges);
-  b.feature_offset.push_back(w.features);
+  const std::vector<Dataset>& specs = datasets();
+  // The values first, which tell the rows the entry adds to each part.
+  std::array<std::int64_t, kPartCount> added{};
+  for (std::size_t d = 0; d < specs.size(); ++d) {
+    if (specs[d].is_offsets()) continue;
+    Table& t = w.tables.table[d];
+    const std::size_t before = t.pending.size();
+    specs[d].put(entry, t.pending);
+    added[specs[d].part] = static_cast<std::int64_t>((t.pending.size() - before) / t.row_bytes());
+  }
+  for (std::size_t d = 0; d < specs.size(); ++d) {
+    const Dataset& spec = specs[d];
+    if (!spec.is_offsets()) continue;
+    // The entry's own offsets into the part it indexes, from 0.
+    const std::vector<std::int64_t> local =
+        spec.local != nullptr ? entry.*spec.local : std::vector<std::int64_t>{0, added[spec.indexes]};
+    for (std::int64_t r = 1; r <= added[spec.part]; ++r) {
+      const std::int64_t end = w.totals[spec.indexes] + (local.empty() ? 0 : local[static_cast<std::size_t>(r)]);
+      append_bytes(w.tables.table[d].pending, &end, sizeof end);
+    }
+  }
+  for (int p = 0; p < kPartCount; ++p) w.totals[p] += added[p];
   if (++w.buffered >= static_cast<std::int64_t>(kBatchEntries))
     w.write_step(w.path, "writing", [&] { w.write_batch(); });
 }
