@@ -12,16 +12,6 @@ namespace reebkit::python {
 
 namespace {
 
-/// Sets the matching option `field` of `options` to the Python `value`,
-/// which must be of its kind and in its range (InvalidArgument, a
-/// ValueError, otherwise: `options` is left as it was).
-void set_matching_option(const MatchingOptionField& field, MatchingOptions& options, const py::handle& value) {
-  MatchingOptions changed = options;
-  field.set(changed, option_value(field, value));
-  field.check(changed);
-  options = changed;
-}
-
 /// Rows of a row-major table of `columns` values of type T.
 template <typename T>
 std::vector<py::ssize_t> row_strides(int columns) {
@@ -185,14 +175,7 @@ void bind_graph(py::module_& m) {
       "library's, as `reeb match --help` shows them; each option is checked against its range when set.");
   matching_options
       .def(py::init([](const py::kwargs& kwargs) {
-             MatchingOptions options;
-             for (const auto& [key, value] : kwargs) {
-               const std::string name = py::str(key);
-               const MatchingOptionField* field = find_option(matching_option_fields(), name);
-               if (!field) throw py::type_error("unknown matching option '" + name + "'");
-               set_matching_option(*field, options, value);
-             }
-             return options;
+             return options_from_keywords(matching_option_fields(), "matching option", kwargs);
            }),
            "The library's defaults, or those given as keywords (MatchingOptions(unmatched_cost=2.0)).")
       .def("__repr__", [](const MatchingOptions& options) {
@@ -209,7 +192,9 @@ void bind_graph(py::module_& m) {
         [&field](const MatchingOptions& options) {
           return std::visit([](const auto& v) -> py::object { return py::cast(v); }, field.get(options));
         },
-        [&field](MatchingOptions& options, const py::object& value) { set_matching_option(field, options, value); },
+        [&field](MatchingOptions& options, const py::object& value) {
+          field.set_checked(options, option_value(field, value));
+        },
         field.help.c_str());
 
   m.def(

@@ -63,10 +63,24 @@ OptionValue option_value(const OptionField<Options>& field, const py::handle& va
   throw py::type_error("option " + field.name + ": expected an int, a float or a str");
 }
 
-/// The analysis options given as keyword arguments, by the names of the
-/// table of pipeline/analysis_options.h (the others keep the library's
-/// default), each in its range. Throws TypeError naming an unknown option,
+/// The options given as keyword arguments, by the names of the rows of
+/// `fields` (the others keep the library's default), each in its range.
+/// Throws TypeError naming an unknown option (`what`: "analysis option"),
 /// InvalidArgument (a ValueError) for a value out of its range.
+template <typename Options>
+Options options_from_keywords(const std::vector<OptionField<Options>>& fields, const char* what,
+                              const py::kwargs& kwargs) {
+  Options options;
+  for (const auto& [key, value] : kwargs) {
+    const std::string name = py::str(key);
+    const OptionField<Options>* field = find_option(fields, name);
+    if (!field) throw py::type_error(std::string("unknown ") + what + " '" + name + "'");
+    field->set_checked(options, option_value(*field, value));
+  }
+  return options;
+}
+
+/// The analysis options given as keyword arguments (options_from_keywords).
 AnalysisOptions analysis_options(const py::kwargs& kwargs);
 
 /// `options` by name (the table of pipeline/analysis_options.h), as a dict.

@@ -30,15 +30,7 @@ void warn(const std::vector<std::string>& warnings) {
 }
 
 AnalysisOptions analysis_options(const py::kwargs& kwargs) {
-  AnalysisOptions options;
-  for (const auto& [key, value] : kwargs) {
-    const std::string name = py::str(key);
-    const AnalysisOptionField* field = find_option(analysis_option_fields(), name);
-    if (!field) throw py::type_error("unknown analysis option '" + name + "'");
-    field->set(options, option_value(*field, value));
-    field->check(options);
-  }
-  return options;
+  return options_from_keywords(analysis_option_fields(), "analysis option", kwargs);
 }
 
 py::dict options_dict(const AnalysisOptions& options) {

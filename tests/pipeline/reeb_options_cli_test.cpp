@@ -8,6 +8,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <string>
+#include <vector>
 
 namespace reebkit::test {
 namespace {
@@ -19,10 +23,34 @@ std::string help(const std::string& command) {
   return out;
 }
 
-/// "--name arg (=default)" as --help shows a flag.
-std::string flag(std::string name, const OptionValue& default_value) {
+/// "--min-persistence" for min_persistence.
+std::string flag_name(std::string name) {
   std::replace(name.begin(), name.end(), '_', '-');
-  return "--" + name + " arg (=" + option_text(default_value) + ")";
+  return "--" + name;
+}
+
+/// "--name arg (=default)" as --help shows a flag.
+std::string flag(const std::string& name, const OptionValue& default_value) {
+  return flag_name(name) + " arg (=" + option_text(default_value) + ")";
+}
+
+/// `text` with every run of white space as one space (--help wraps its lines).
+std::string one_line(const std::string& text) {
+  std::string out;
+  for (const char c : text)
+    if (!std::isspace(static_cast<unsigned char>(c)))
+      out += c;
+    else if (!out.empty() && out.back() != ' ')
+      out += ' ';
+  return out;
+}
+
+/// The row of `field` in the docs' tables of options (docs/command-line.md).
+template <typename Options>
+std::string docs_row(const OptionField<Options>& field) {
+  const std::string values = field.values();
+  return "| `" + flag_name(field.name) + "` | " + option_text(field.get(Options{})) + " | " +
+         (values.empty() ? "—" : values) + " | " + field.help + " |";
 }
 
 TEST(ReebOptionsCli, EveryAnalysingCommandOffersEveryAnalysisOptionWithTheLibraryDefault) {
@@ -47,6 +75,39 @@ TEST(ReebOptionsCli, EveryMatchingCommandOffersEveryMatchingOptionWithTheLibrary
           << "reeb " << command << " --help lacks " << flag(field.name, field.get(MatchingOptions{})) << "\n"
           << text;
   }
+}
+
+TEST(ReebOptionsCli, EveryFlagIsDescribedByItsRowWithItsValues) {
+  const std::string text = one_line(help("match"));
+  const auto expect_described = [&](const auto& field, const OptionValue& default_value) {
+    const std::string line = flag(field.name, default_value) + " " + field.described();
+    EXPECT_NE(text.find(line), std::string::npos) << "reeb match --help lacks " << line << "\n" << text;
+  };
+  for (const AnalysisOptionField& field : analysis_option_fields()) expect_described(field, field.get(AnalysisOptions{}));
+  for (const MatchingOptionField& field : matching_option_fields()) expect_described(field, field.get(MatchingOptions{}));
+  EXPECT_NE(text.find("--unmatched-cost arg (=1.5) cost of deleting or inserting a node, per unit of node weight; "
+                      "values in (0, inf)"),
+            std::string::npos)
+      << text;
+}
+
+// Before: docs/command-line.md listed the options by hand, their ranges in
+// prose that no test read.
+TEST(ReebOptionsCli, TheDocsTablesOfOptionsAreTheLibraryTablesRowByRow) {
+  std::ifstream docs(std::string(REEBKIT_SOURCE_DIR) + "/docs/command-line.md");
+  ASSERT_TRUE(docs) << "cannot read docs/command-line.md";
+  std::vector<std::string> rows;  // of the docs' tables of options, in order
+  for (std::string line; std::getline(docs, line);)
+    if (line.rfind("| `--", 0) == 0) rows.push_back(line);
+  std::vector<std::string> expected;
+  for (const AnalysisOptionField& field : analysis_option_fields()) expected.push_back(docs_row(field));
+  for (const MatchingOptionField& field : matching_option_fields()) expected.push_back(docs_row(field));
+  std::string tables;
+  for (const std::string& row : expected) tables += row + "\n";
+  EXPECT_EQ(rows, expected) << "docs/command-line.md: the rows of its two tables of options (analysis, then "
+                               "matching) are, from pipeline/analysis_options.cpp and "
+                               "matching/matching_options.cpp:\n"
+                            << tables;
 }
 
 TEST(ReebOptionsCli, AnAnalysisOptionOfTheWrongKindIsRejectedNamingIt) {

@@ -34,16 +34,13 @@ po::options_description table_options(const char* title, const std::vector<Optio
   po::options_description out(title);
   for (const OptionField<Options>& field : fields) {
     const OptionValue current = field.get(options);
-    const auto set = [&options, &field](const auto& value) {
-      field.set(options, OptionValue(value));
-      field.check(options);
-    };
+    const auto set = [&options, &field](const auto& value) { field.set_checked(options, OptionValue(value)); };
     std::visit(
         [&](const auto& value) {
           using T = std::decay_t<decltype(value)>;
           out.add_options()(flag_name(field.name).c_str(),
                             po::value<T>()->default_value(value, option_text(current))->notifier(set),
-                            field.help.c_str());
+                            field.described().c_str());
         },
         current);
   }

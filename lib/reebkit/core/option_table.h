@@ -54,6 +54,21 @@ struct OptionField {
   /// Throws InvalidArgument naming the option, its value and its range when
   /// its value in `options` is out of that range.
   std::function<void(const Options& options)> check;
+
+  /// set, then check: `options` is left as it was when either throws.
+  void set_checked(Options& options, const OptionValue& value) const {
+    Options changed = options;
+    set(changed, value);
+    check(changed);
+    options = changed;
+  }
+  /// The values a number may take as text ("[0, inf)"); "" for a text
+  /// option (its help names them).
+  std::string values() const {
+    return std::holds_alternative<std::string>(get(Options{})) ? std::string() : range.text();
+  }
+  /// The help line with the values: what --help and the docs show.
+  std::string described() const { return values().empty() ? help : help + "; values in " + values(); }
 };
 
 namespace option_table_detail {
@@ -148,10 +163,7 @@ void set_option_text(const std::vector<OptionField<Options>>& fields, Options& o
   if (eq == std::string::npos || !field)
     throw InvalidArgument(assignment + ": expected NAME=VALUE, NAME one of the options");
   try {
-    Options changed = options;  // left as it was on an error
-    field->set(changed, option_value_from_text(field->get(options), assignment.substr(eq + 1)));
-    field->check(changed);
-    options = changed;
+    field->set_checked(options, option_value_from_text(field->get(options), assignment.substr(eq + 1)));
   } catch (const InvalidArgument& e) {
     throw InvalidArgument(assignment + ": " + e.what());
   }
