@@ -19,7 +19,7 @@ Eigen::VectorXd coordinate(const Mesh& m, int axis) { return m.vertices.col(axis
 TEST(LaplaceBeltrami, SymmetricWithConstantsInTheKernelAndMassSummingToTheArea) {
   const Mesh m = make_torus(24, 10, 1.0, 0.4);
   const LaplaceBeltrami consistent = laplace_beltrami(m);
-  const LaplaceBeltrami lumped = laplace_beltrami(m, {MassMatrix::lumped});
+  const LaplaceBeltrami lumped = laplace_beltrami(m, {MassMatrix::Lumped});
   const Eigen::VectorXd ones = Eigen::VectorXd::Ones(m.num_vertices());
   EXPECT_LT((consistent.stiffness * ones).lpNorm<Eigen::Infinity>(), 1e-12);
   EXPECT_LT((Eigen::SparseMatrix<double>(consistent.stiffness.transpose()) - consistent.stiffness).norm(), 1e-12);

@@ -61,7 +61,7 @@ TEST(ShapeDna, LumpedMassConvergesToo) {
   const std::vector<double> exact = sphere_spectrum(4);
   ShapeDnaOptions options;
   options.eigenvalues = static_cast<int>(exact.size());
-  options.mass = MassMatrix::lumped;
+  options.mass = MassMatrix::Lumped;
   const double coarse = max_relative_error(shape_dna(make_icosphere(3), options).eigenvalues, exact);
   const double fine = max_relative_error(shape_dna(make_icosphere(5), options).eigenvalues, exact);
   EXPECT_LT(fine, coarse / 8) << coarse << " then " << fine;

@@ -37,7 +37,7 @@ LaplaceBeltrami laplace_beltrami(const Mesh& mesh, const LaplaceBeltramiOptions&
     }
     const double area = 0.5 * twice_area;
     for (int a = 0; a < 3; ++a) {
-      if (options.mass == MassMatrix::lumped) {
+      if (options.mass == MassMatrix::Lumped) {
         mass.emplace_back(v[a], v[a], area / 3);
         continue;
       }

@@ -26,14 +26,14 @@ enum class MassMatrix {
   /// per triangle (Reuter et al. 2006's Galerkin mass matrix, with linear
   /// elements): Rayleigh-Ritz, so every eigenvalue is an upper bound of the
   /// smooth surface's one (min-max principle).
-  consistent,
+  Consistent,
   /// Row sums of the consistent matrix, a third of the area of the incident
   /// triangles on the diagonal: diagonal, cheaper, no bound.
-  lumped,
+  Lumped,
 };
 
 struct LaplaceBeltramiOptions {
-  MassMatrix mass = MassMatrix::consistent;  ///< see MassMatrix
+  MassMatrix mass = MassMatrix::Consistent;  ///< see MassMatrix
 };
 
 /// The stiffness and mass matrices, n x n for the n vertices with area (all

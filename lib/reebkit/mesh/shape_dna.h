@@ -28,7 +28,7 @@ struct ShapeDnaOptions {
   /// thousand vertices, and the solver's time grows with the count.
   int eigenvalues = 50;
   /// Consistent: the Galerkin mass matrix of Reuter et al. (see MassMatrix).
-  MassMatrix mass = MassMatrix::consistent;
+  MassMatrix mass = MassMatrix::Consistent;
   /// The shift of the shift-and-invert iterations, in units of 1 / area
   /// (the scale of lambda x area): small and negative, below the zero
   /// eigenvalue of the Neumann problem.
