@@ -83,8 +83,10 @@ TEST(ReebOptionsCli, EveryFlagIsDescribedByItsRowWithItsValues) {
     const std::string line = flag(field.name, default_value) + " " + field.described();
     EXPECT_NE(text.find(line), std::string::npos) << "reeb match --help lacks " << line << "\n" << text;
   };
-  for (const AnalysisOptionField& field : analysis_option_fields()) expect_described(field, field.get(AnalysisOptions{}));
-  for (const MatchingOptionField& field : matching_option_fields()) expect_described(field, field.get(MatchingOptions{}));
+  for (const AnalysisOptionField& field : analysis_option_fields())
+    expect_described(field, field.get(AnalysisOptions{}));
+  for (const MatchingOptionField& field : matching_option_fields())
+    expect_described(field, field.get(MatchingOptions{}));
   EXPECT_NE(text.find("--unmatched-cost arg (=1.5) cost of deleting or inserting a node, per unit of node weight; "
                       "values in (0, inf)"),
             std::string::npos)

@@ -367,9 +367,7 @@ std::string utc_now() {
 /// What the rows of a dataset are: each entry adds one row to kEntry and
 /// rows of its own to each other part (the bytes of its name, its nodes,
 /// ...), which an offsets dataset indexes.
-enum Part : int {
-  kEntry, kNameByte, kClassByte, kErrorByte, kNode, kEdge, kFeaturePoint, kSkeletonPoint, kPartCount
-};
+enum Part : int { kEntry, kNameByte, kClassByte, kErrorByte, kNode, kEdge, kFeaturePoint, kSkeletonPoint, kPartCount };
 
 /// A dataset of the layout: its name, element type and columns, what its
 /// rows are and how an entry's rows are made and read back. Either the
@@ -721,7 +719,8 @@ std::vector<GraphRecord> read_entries(const Tables& t, const Snapshot& s, std::i
     if (spec.part == kEntry) {
       offset.assign(s.offsets[spec.indexes].begin() + first, s.offsets[spec.indexes].begin() + first + n + 1);
     } else {
-      offset = t.table[d].read_vector<std::int64_t>(static_cast<hsize_t>(row0), static_cast<hsize_t>(rows.back() - row0 + 1));
+      offset = t.table[d].read_vector<std::int64_t>(static_cast<hsize_t>(row0),
+                                                    static_cast<hsize_t>(rows.back() - row0 + 1));
       check_offsets(offset, t.rows_of(spec.indexes), spec.name);
     }
     for (const std::int64_t r : rows) bounds[spec.indexes].push_back(offset[static_cast<std::size_t>(r - row0)]);
@@ -739,7 +738,8 @@ std::vector<GraphRecord> read_entries(const Tables& t, const Snapshot& s, std::i
     const Table& table = t.table[d];
     const std::vector<std::int64_t>& rows = bounds[spec.part];
     const std::int64_t row0 = rows.front();
-    const std::vector<char> data = table.read_rows(static_cast<hsize_t>(row0), static_cast<hsize_t>(rows.back() - row0));
+    const std::vector<char> data =
+        table.read_rows(static_cast<hsize_t>(row0), static_cast<hsize_t>(rows.back() - row0));
     for (std::size_t k = 0; k < out.size(); ++k)
       spec.take(out[k], data.data() + static_cast<std::size_t>(rows[k] - row0) * table.row_bytes(),
                 static_cast<std::size_t>(rows[k + 1] - rows[k]) * table.columns());
