@@ -80,8 +80,8 @@ int main(int argc, char** argv) {
                 argv[1], reebkit::kSignatureLength);
     double hits = 0;
     for (const auto& [label, c] : per_class) {
-      std::printf("| %s | %d | %.3f | %.3f | %d of %d |\n", label.c_str(), sizes[label], c[1] ? c[0] / c[1] : 0.0,
-                  c[3] ? c[2] / c[3] : 0.0, static_cast<int>(c[4]), sizes[label]);
+      std::printf("| %s | %d | %.3f | %.3f | %d of %d |\n", label.c_str(), sizes[label], c[1] != 0 ? c[0] / c[1] : 0.0,
+                  c[3] != 0 ? c[2] / c[3] : 0.0, static_cast<int>(c[4]), sizes[label]);
       hits += c[4];
     }
     std::printf("\nNearest neighbour in the same class: %d of %zu meshes.\n", static_cast<int>(hits), samples.size());

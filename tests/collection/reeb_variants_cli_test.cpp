@@ -32,16 +32,16 @@ Mesh load(const std::filesystem::path& path) { return std::move(load_mesh(path).
 class ReebVariantsCli : public ::testing::Test {
  protected:
   void SetUp() override {
-    std::filesystem::create_directories(dir / "in");
+    std::filesystem::create_directories(dir_ / "in");
     for (const char* name : {"cactus.off", "eight.off"})  // genus 0 and 2
-      std::filesystem::copy_file(embedded_dataset_dir() / name, dir / "in" / name);
-    ASSERT_EQ(run_variants(dir / "in", dir / "out"), 0);
+      std::filesystem::copy_file(embedded_dataset_dir() / name, dir_ / "in" / name);
+    ASSERT_EQ(run_variants(dir_ / "in", dir_ / "out"), 0);
   }
-  TempDir dir;
+  TempDir dir_;
 };
 
 TEST_F(ReebVariantsCli, FilesAndClassFileAgree) {
-  const std::vector<PsbClass> classes = read_psb_classes(dir / "out" / "variants.cla");
+  const std::vector<PsbClass> classes = read_psb_classes(dir_ / "out" / "variants.cla");
   ASSERT_EQ(classes.size(), 2u);
   EXPECT_EQ(classes[0].name, "cactus");
   EXPECT_EQ(classes[1].name, "eight");
@@ -54,7 +54,7 @@ TEST_F(ReebVariantsCli, FilesAndClassFileAgree) {
   // What reeb index would read from the folder is exactly what the .cla lists, in the right class.
   const ClassMap map = class_map(classes);
   std::set<std::string> files;
-  for (const MeshInput& input : list_mesh_inputs({(dir / "out").string()})) {
+  for (const MeshInput& input : list_mesh_inputs({(dir_ / "out").string()})) {
     files.insert(std::filesystem::path(input.name).stem().string());
     const std::string source = class_of(map, input.name);
     EXPECT_EQ(input.name.rfind(source, 0), 0u) << input.name << " in class " << source;
@@ -65,24 +65,24 @@ TEST_F(ReebVariantsCli, FilesAndClassFileAgree) {
 TEST_F(ReebVariantsCli, MeshFilesGivenByAbsolutePathWriteIntoTheOutputFolderOnly) {
   // Named as given, an absolute path must not turn `dir / name` into the
   // input's own folder (which overwrote the inputs once).
-  const std::filesystem::path input = std::filesystem::absolute(dir / "in" / "cactus.off");
+  const std::filesystem::path input = std::filesystem::absolute(dir_ / "in" / "cactus.off");
   const std::string before = read_file_bytes(input);
-  ASSERT_EQ(run_variants(input, dir / "abs"), 0);
+  ASSERT_EQ(run_variants(input, dir_ / "abs"), 0);
   EXPECT_EQ(read_file_bytes(input), before);
-  EXPECT_FALSE(std::filesystem::exists(dir / "in" / "cactus_rotated.off"));
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "in" / "cactus_rotated.off"));
   for (const char* suffix : kSuffixes)
-    EXPECT_TRUE(std::filesystem::exists(dir / "abs" / (std::string("cactus") + suffix + ".off"))) << suffix;
-  EXPECT_EQ(read_psb_classes(dir / "abs" / "variants.cla").front().name, "cactus");
+    EXPECT_TRUE(std::filesystem::exists(dir_ / "abs" / (std::string("cactus") + suffix + ".off"))) << suffix;
+  EXPECT_EQ(read_psb_classes(dir_ / "abs" / "variants.cla").front().name, "cactus");
   // An output folder that is the input's own folder is refused, not overwritten.
-  EXPECT_NE(run_variants(input, dir / "in"), 0);
+  EXPECT_NE(run_variants(input, dir_ / "in"), 0);
   EXPECT_EQ(read_file_bytes(input), before);
 }
 
 TEST_F(ReebVariantsCli, EveryVariantLoadsWithTheGenusOfItsSource) {
   for (const auto& [name, genus] : {std::pair<std::string, int>{"cactus", 0}, {"eight", 2}}) {
-    const Mesh original = load(dir / "in" / (name + ".off"));
+    const Mesh original = load(dir_ / "in" / (name + ".off"));
     for (const char* suffix : kSuffixes) {
-      const Mesh variant = load(dir / "out" / (name + suffix + ".off"));
+      const Mesh variant = load(dir_ / "out" / (name + suffix + ".off"));
       const MeshTopology topology = analyze_topology(variant);
       EXPECT_EQ(topology.genus, genus) << name << suffix;
       EXPECT_TRUE(topology.closed) << name << suffix;
@@ -109,8 +109,8 @@ TEST_F(ReebVariantsCli, EveryVariantLoadsWithTheGenusOfItsSource) {
 
 TEST_F(ReebVariantsCli, TheRotatedCopyHasTheSameReebGraph) {
   for (const std::string name : {"cactus", "eight"}) {
-    const MeshAnalysis a = analyze_mesh(load(dir / "out" / (name + ".off")));
-    const MeshAnalysis b = analyze_mesh(load(dir / "out" / (name + "_rotated.off")));
+    const MeshAnalysis a = analyze_mesh(load(dir_ / "out" / (name + ".off")));
+    const MeshAnalysis b = analyze_mesh(load(dir_ / "out" / (name + "_rotated.off")));
     const double scale = (b.mesh.vertices.row(1) - b.mesh.vertices.row(0)).norm() /
                          (a.mesh.vertices.row(1) - a.mesh.vertices.row(0)).norm();
     EXPECT_TRUE(scale < 0.999 || scale > 1.001) << "not rescaled";
@@ -131,28 +131,28 @@ TEST_F(ReebVariantsCli, TheRotatedCopyHasTheSameReebGraph) {
 // Before: `reeb variants datasets/*.off -o coll/` wrote into coll/datasets/
 // and named the classes datasets/elk.
 TEST_F(ReebVariantsCli, MeshFilesGivenByRelativePathAreNamedByTheirStem) {
-  const auto [status, out] = run_command("cd " + shell_quoted(dir / "") + " && " + REEB_BINARY +
-                                         " variants in/cactus.off -o rel 2>&1");
+  const auto [status, out] =
+      run_command("cd " + shell_quoted(dir_ / "") + " && " + REEB_BINARY + " variants in/cactus.off -o rel 2>&1");
   ASSERT_EQ(status, 0) << out;
-  EXPECT_EQ(read_psb_classes(dir / "rel" / "variants.cla").front().name, "cactus");
+  EXPECT_EQ(read_psb_classes(dir_ / "rel" / "variants.cla").front().name, "cactus");
   std::vector<std::string> expected = {"variants.cla"};
   for (const char* suffix : kSuffixes) expected.push_back(std::string("cactus") + suffix + ".off");
   std::sort(expected.begin(), expected.end());
-  EXPECT_EQ(files_in(dir / "rel"), expected);
+  EXPECT_EQ(files_in(dir_ / "rel"), expected);
   // Two meshes of one stem would be one class: refused, naming both.
-  std::filesystem::create_directories(dir / "in2");
-  std::filesystem::copy_file(dir / "in" / "cactus.off", dir / "in2" / "cactus.off");
-  const auto [twice, twice_out] = run_command("cd " + shell_quoted(dir / "") + " && " + REEB_BINARY +
+  std::filesystem::create_directories(dir_ / "in2");
+  std::filesystem::copy_file(dir_ / "in" / "cactus.off", dir_ / "in2" / "cactus.off");
+  const auto [twice, twice_out] = run_command("cd " + shell_quoted(dir_ / "") + " && " + REEB_BINARY +
                                               " variants in/cactus.off in2/cactus.off -o twice 2>&1");
   EXPECT_EQ(twice, 1) << twice_out;
   EXPECT_NE(twice_out.find("would both be named 'cactus'"), std::string::npos) << twice_out;
 }
 
 TEST_F(ReebVariantsCli, TheSameSeedWritesTheSameFiles) {
-  ASSERT_EQ(run_variants(dir / "in", dir / "again"), 0);
-  for (const MeshInput& input : list_mesh_inputs({(dir / "out").string()}))
-    EXPECT_EQ(read_file_bytes(input.path), read_file_bytes(dir / "again" / input.name)) << input.name;
-  EXPECT_EQ(read_file_bytes(dir / "out" / "variants.cla"), read_file_bytes(dir / "again" / "variants.cla"));
+  ASSERT_EQ(run_variants(dir_ / "in", dir_ / "again"), 0);
+  for (const MeshInput& input : list_mesh_inputs({(dir_ / "out").string()}))
+    EXPECT_EQ(read_file_bytes(input.path), read_file_bytes(dir_ / "again" / input.name)) << input.name;
+  EXPECT_EQ(read_file_bytes(dir_ / "out" / "variants.cla"), read_file_bytes(dir_ / "again" / "variants.cla"));
 }
 
 }  // namespace
