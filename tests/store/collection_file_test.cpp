@@ -18,8 +18,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <map>
 #include <random>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <thread>
@@ -456,6 +458,53 @@ TEST(CollectionFile, PythonReadsItWithH5pyAndNumpy) {
   EXPECT_EQ(fields.at("columns/timings").size(), static_cast<std::size_t>(kTimeColumnCount));
   EXPECT_EQ(fields.at("columns/edges").size(), 2u);
   EXPECT_EQ(fields.at("columns/skeleton_points").size(), 3u);
+}
+
+/// A dataset's element type as the docs write it: "uint8", "int64", "float64".
+std::string type_name(const H5::DataSet& dataset) {
+  const std::string bits = std::to_string(8 * dataset.getDataType().getSize());
+  if (dataset.getTypeClass() == H5T_FLOAT) return "float" + bits;
+  return (dataset.getIntType().getSign() == H5T_SGN_NONE ? "uint" : "int") + bits;
+}
+
+// Before: docs/collection-file.md gave signature 64 columns and node_attr
+// 34, where the file has 80 and 40.
+TEST(CollectionFile, TheDocsTableOfDatasetsIsTheFileDatasetByDataset) {
+  const TempDir dir;
+  write_entries(dir / "c.h5", 0, 40, false);
+  // Each dataset as "(, width) type" (rank 2) or "(,) type" (rank 1).
+  const auto shape = [](const std::string& width, const std::string& type) {
+    return (width.empty() ? "(,)" : "(, " + width + ")") + " " + type;
+  };
+  std::map<std::string, std::string> file;
+  const H5::H5File h5((dir / "c.h5").string(), H5F_ACC_RDONLY);
+  for (hsize_t i = 0; i < h5.getNumObjs(); ++i) {
+    const std::string name = h5.getObjnameByIdx(i);
+    if (h5.childObjType(name) != H5O_TYPE_DATASET) continue;
+    const H5::DataSet dataset = h5.openDataSet(name);
+    hsize_t dims[2] = {0, 0};
+    const int rank = dataset.getSpace().getSimpleExtentDims(dims);
+    file[name] = shape(rank == 2 ? std::to_string(dims[1]) : "", type_name(dataset));
+  }
+  // The table's rows: "| `a`, `b` | (G,) int64, (G+1,) int64 | meaning |",
+  // one shape for all the names or one each.
+  std::ifstream in(std::string(REEBKIT_SOURCE_DIR) + "/docs/collection-file.md");
+  ASSERT_TRUE(in) << "cannot read docs/collection-file.md";
+  const std::regex name_pattern("`([a-z_]+)`"), shape_pattern(R"(\(([^,)]*),\s*([^)]*)\)\s+(\w+))");
+  std::map<std::string, std::string> docs;
+  for (std::string line; std::getline(in, line) && line.rfind("Every 2-D dataset", 0) != 0;) {
+    if (line.rfind("| `", 0) != 0) continue;
+    const std::size_t bar = line.find(" | "), next = line.find(" | ", bar + 3);
+    const std::string names_cell = line.substr(0, bar), shapes_cell = line.substr(bar + 3, next - bar - 3);
+    std::vector<std::string> names, shapes;
+    for (std::sregex_iterator m(names_cell.begin(), names_cell.end(), name_pattern), end; m != end; ++m)
+      names.push_back((*m)[1]);
+    for (std::sregex_iterator m(shapes_cell.begin(), shapes_cell.end(), shape_pattern), end; m != end; ++m)
+      shapes.push_back(shape((*m)[2], (*m)[3]));
+    ASSERT_TRUE(shapes.size() == 1 || shapes.size() == names.size()) << line;
+    for (std::size_t k = 0; k < names.size(); ++k) docs[names[k]] = shapes[shapes.size() == 1 ? 0 : k];
+  }
+  EXPECT_EQ(docs, file) << "docs/collection-file.md's table of datasets and the file written disagree";
 }
 
 // --- kill -9 ----------------------------------------------------------------
