@@ -77,6 +77,7 @@ TEST(ExtractCollection, BrokenMeshIsRecordedAndTheOthersMatchTheDirectPipeline) 
   EXPECT_FALSE(broken.ok);
   EXPECT_EQ(broken.error, summary.failed[0].reason);
   EXPECT_EQ(broken.num_nodes(), 0);
+  EXPECT_EQ(broken.content_hash, content_hash(inputs[0].path));  // read and hashed, then refused
   for (std::size_t i = 1; i < inputs.size(); ++i) {
     GraphRecord expected = direct_entry(inputs[i]);
     expected.class_label = i == 1 ? "star" : i == 6 ? "torus" : "";
@@ -87,6 +88,43 @@ TEST(ExtractCollection, BrokenMeshIsRecordedAndTheOthersMatchTheDirectPipeline) 
   for (int arms = 1; arms <= 5; ++arms) EXPECT_EQ(independent_cycles(reader.entry(arms)), 0);
   EXPECT_EQ(independent_cycles(reader.entry(6)), 1);
   EXPECT_EQ(independent_cycles(reader.entry(7)), 1);
+}
+
+/// Bytes this process has read so far (Linux: rchar of /proc/self/io,
+/// every read system call, from files or not); nullopt elsewhere.
+std::optional<std::int64_t> bytes_read_by_process() {
+  std::ifstream io("/proc/self/io");
+  for (std::string key; io >> key;) {
+    std::int64_t value = 0;
+    io >> value;
+    if (key == "rchar:") return value;
+  }
+  return std::nullopt;
+}
+
+// Each mesh file is read once: parsed and hashed from the same bytes, not
+// hashed first and parsed after (which read the inputs twice).
+TEST(ExtractCollection, EachFileIsReadOnce) {
+  if (!bytes_read_by_process()) GTEST_SKIP() << "no /proc/self/io to count the bytes read";
+  const TempDir dir;
+  std::filesystem::create_directories(dir / "meshes");
+  std::int64_t input_bytes = 0;
+  for (int k = 0; k < 3; ++k) {  // about 0.4 MB of OFF text each, far above the HDF5 file's own reads
+    const std::filesystem::path path = dir / ("meshes/t" + std::to_string(k) + ".off");
+    write_off(path, make_torus(120 + 10 * k, 60));
+    input_bytes += static_cast<std::int64_t>(std::filesystem::file_size(path));
+  }
+  const std::vector<MeshInput> inputs = list_mesh_inputs({(dir / "meshes").string()});
+  const std::int64_t before = *bytes_read_by_process();
+  const ExtractionSummary summary = extract_collection(inputs, {}, dir / "c.h5", with_threads(1));
+  const std::int64_t read = *bytes_read_by_process() - before;
+  EXPECT_EQ(summary.ok, 3);
+  EXPECT_GE(read, input_bytes);
+  EXPECT_LT(read, input_bytes + input_bytes / 4) << read << " bytes read for " << input_bytes << " bytes of meshes";
+  // The hashes are those of the files, as --resume compares them.
+  const CollectionReader reader(dir / "c.h5");
+  for (std::size_t i = 0; i < inputs.size(); ++i)
+    EXPECT_EQ(reader.content_hashes()[i], content_hash(inputs[i].path)) << inputs[i].name;
 }
 
 TEST(ExtractCollection, SerialAndParallelFilesAreTheSame) {

@@ -304,6 +304,48 @@ TEST(GraphMatching, GlobalTermsAreHalfTheL1DistanceOfTheWholeSurfaceHistograms) 
   }
 }
 
+TEST(GraphMatching, GlobalSpectrumTermSaturatesTheLogRatioOfTheEigenvalues) {
+  // The same graph with every compared eigenvalue of the whole surface
+  // scaled by 2 (signature y = s / (1 + s) of s -> 2 s): d = ln 2, g_s = w d
+  // / (d + scale). The eigenvalues beyond the compared ones do not count.
+  const GraphRecord& a = shapes()[0];
+  MatchingOptions options;
+  options.global_spectrum_eigenvalues = 5;
+  options.global_spectrum_scale = 0.25;
+  options.global_spectrum_weight = 3.0;
+  GraphRecord b = a;
+  for (int k = 0; k < kGlobalSpectrumLength; ++k) {
+    double& y = b.signature[static_cast<std::size_t>(kSigGlobalSpectrum + k)];
+    ASSERT_GT(y, 0.0);
+    const double s = y / (1.0 - y) * (k < options.global_spectrum_eigenvalues ? 2.0 : 5.0);
+    y = s / (1.0 + s);
+  }
+  const double d = std::log(2.0);
+  EXPECT_NEAR(match_graphs(a, b, options).distance, 3.0 * d / (d + 0.25), 1e-9);
+  EXPECT_EQ(match_graphs(a, b, options).distance, match_graphs(b, a, options).distance);
+  // Half of the weight at d = scale; the term bounded by its weight.
+  options.global_spectrum_scale = d;
+  EXPECT_NEAR(match_graphs(a, b, options).distance, 1.5, 1e-9);
+  GraphRecord missing = a;  // a spectrum that could not be computed: zeros
+  std::fill_n(missing.signature.begin() + kSigGlobalSpectrum, kGlobalSpectrumLength, 0.0);
+  const double far = match_graphs(a, missing, options).distance;
+  EXPECT_GT(far, 2.9);
+  EXPECT_LE(far, 3.0);
+  options.global_spectrum_weight = 0.0;
+  EXPECT_EQ(match_graphs(a, b, options).distance, 0.0);
+}
+
+TEST(GraphMatching, GlobalSpectrumOptionsAreChecked) {
+  MatchingOptions options;
+  options.global_spectrum_eigenvalues = kGlobalSpectrumLength + 1;
+  EXPECT_THROW(match_graphs(shapes()[0], shapes()[1], options), InvalidArgument);
+  options.global_spectrum_eigenvalues = 0;
+  EXPECT_THROW(match_graphs(shapes()[0], shapes()[1], options), InvalidArgument);
+  options.global_spectrum_eigenvalues = 8;
+  options.global_spectrum_scale = 0.0;
+  EXPECT_THROW(match_graphs(shapes()[0], shapes()[1], options), InvalidArgument);
+}
+
 // A capsule with one half turned by 60 degrees about the middle
 // (deform_component, as `reeb deform` does: rigid beyond a short bend): a
 // pose of the same shape. Compared by the shape terms alone (the other

@@ -20,18 +20,21 @@
 #include <sstream>
 #include <type_traits>
 #include <unordered_map>
+#include <unordered_set>
 #include <variant>
 
 namespace reebkit {
 namespace {
 
-/// The entry of one mesh; any exception becomes a failed entry.
-GraphRecord compute_entry(const MeshInput& input, std::uint64_t hash, const std::string& class_label,
-                          const AnalysisOptions& options) {
+/// The entry of one mesh, its file read once (parsed and hashed); any
+/// exception becomes a failed entry, with the hash of the file when it
+/// could be read (0 otherwise), so that --resume skips it while it stays
+/// the same.
+GraphRecord compute_entry(const MeshInput& input, const std::string& class_label, const AnalysisOptions& options) {
+  std::uint64_t hash = 0;
   try {
-    GraphRecord entry = analyze_mesh_file(input.path, input.name, options);
+    GraphRecord entry = analyze_mesh_file(input.path, input.name, options, &hash);
     entry.class_label = class_label;
-    entry.content_hash = hash;
     return entry;
   } catch (const std::exception& e) {
     return failed_graph_record(input.name, class_label, hash, e.what());
@@ -307,16 +310,24 @@ ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const
   progress.total = static_cast<std::int64_t>(inputs.size());
   const ClassMap class_of_model = class_map(provenance.classes);
 
-  const std::vector<std::uint64_t> hashes = hash_inputs(inputs, threads);
-  std::unordered_map<std::string, std::uint64_t> current;  // input name -> hash
-  for (std::size_t i = 0; i < inputs.size(); ++i) current.emplace(inputs[i].name, hashes[i]);
-
   // Resume: which entries of the file stay, and whether stale ones (or new
-  // classes for every entry) force a rewrite.
+  // classes for every entry) force a rewrite. Only the inputs the file
+  // already holds are hashed here, to tell which changed; every other file
+  // is read once, when it is analysed (compute_entry hashes those bytes).
   std::unordered_map<std::string, std::uint64_t> kept;
   bool rewrite = false;
   Timer open_time;
   auto writer = std::make_unique<CollectionWriter>(target, provenance, resume);
+  std::unordered_map<std::string, std::uint64_t> current;  // input name -> hash, for the names the file holds
+  {
+    std::unordered_set<std::string> held;
+    for (const auto& entry : writer->existing()) held.insert(entry.first);
+    std::vector<MeshInput> to_hash;
+    for (const MeshInput& input : inputs)
+      if (held.count(input.name)) to_hash.push_back(input);
+    const std::vector<std::uint64_t> hashes = hash_inputs(to_hash, threads);
+    for (std::size_t i = 0; i < to_hash.size(); ++i) current.emplace(to_hash[i].name, hashes[i]);
+  }
   for (const auto& [name, hash] : writer->existing()) {
     const auto it = current.find(name);
     if (it != current.end() && it->second != hash)
@@ -347,7 +358,8 @@ ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const
   std::vector<std::size_t> todo;
   for (std::size_t i = 0; i < inputs.size(); ++i) {
     const auto it = kept.find(inputs[i].name);
-    if (it != kept.end() && it->second == hashes[i])
+    const auto now = current.find(inputs[i].name);
+    if (it != kept.end() && now != current.end() && it->second == now->second)
       ++summary.skipped;
     else
       todo.push_back(i);
@@ -364,7 +376,7 @@ ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const
         },
         threads, static_cast<std::size_t>(options.batch_size),
         [&](std::size_t i) {
-          return compute_entry(inputs[i], hashes[i], class_of(class_of_model, inputs[i].name), options.analysis);
+          return compute_entry(inputs[i], class_of(class_of_model, inputs[i].name), options.analysis);
         },
         sink);
     sink.timed([&] { writer->close(); });
@@ -419,8 +431,7 @@ ExtractionSummary extract_shard(const std::vector<MeshInput>& inputs, const std:
       },
       options.threads > 0 ? options.threads : omp_get_max_threads(), static_cast<std::size_t>(options.batch_size),
       [&](std::size_t i) {
-        return compute_entry(inputs[i], input_hash(inputs[i]), class_of(class_of_model, inputs[i].name),
-                             options.analysis);
+        return compute_entry(inputs[i], class_of(class_of_model, inputs[i].name), options.analysis);
       },
       sink);
   sink.timed([&] { writer.close(); });

@@ -1,6 +1,7 @@
 #include "reebkit/io/mesh_io.h"
 
 #include "reebkit/core/error.h"
+#include "reebkit/io/file_bytes.h"
 #include "reebkit/io/obj.h"
 #include "reebkit/io/off.h"
 #include "reebkit/io/ply.h"
@@ -28,13 +29,20 @@ std::string unsupported(const std::string& extension, const std::string& problem
 
 }  // namespace
 
+PolygonSoup parse_polygon_soup(std::string_view bytes, const std::filesystem::path& path) {
+  const std::string extension = lower_extension(path);
+  if (extension == ".off") return parse_off(bytes, path.string());
+  if (extension == ".obj") return parse_obj(bytes, path.string());
+  if (extension == ".ply") return parse_ply(bytes, path.string());
+  if (extension == ".stl") return parse_stl(bytes, path.string());
+  throw MeshFileError(path.string(), unsupported(extension, "unknown mesh format", ".off, .obj, .ply, .stl"));
+}
+
 PolygonSoup read_polygon_soup(const std::filesystem::path& path) {
   const std::string extension = lower_extension(path);
-  if (extension == ".off") return read_off(path);
-  if (extension == ".obj") return read_obj(path);
-  if (extension == ".ply") return read_ply(path);
-  if (extension == ".stl") return read_stl(path);
-  throw MeshFileError(path.string(), unsupported(extension, "unknown mesh format", ".off, .obj, .ply, .stl"));
+  if (extension != ".off" && extension != ".obj" && extension != ".ply" && extension != ".stl")
+    return parse_polygon_soup({}, path);  // the error, before the file is read
+  return parse_polygon_soup(read_file_bytes(path), path);
 }
 
 void write_mesh(const std::filesystem::path& path, const Mesh& mesh) {

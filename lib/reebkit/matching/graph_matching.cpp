@@ -187,13 +187,24 @@ double weighted_half_l1(const std::vector<double>& x, const std::vector<double>&
   return weight * l1 / 2.0;
 }
 
+/// g_s(A, B) of MatchingOptions: the root mean square log ratio d of the
+/// first global_spectrum_eigenvalues eigenvalues, saturated as d / (d +
+/// global_spectrum_scale).
+double global_spectrum_term(const MatchableGraph& a, const MatchableGraph& b, const MatchingOptions& o) {
+  if (o.global_spectrum_weight == 0.0) return 0.0;
+  const auto n = static_cast<std::size_t>(o.global_spectrum_eigenvalues);
+  double sum = 0.0;
+  for (std::size_t k = 0; k < n; ++k) sum += (a.global_spectrum[k] - b.global_spectrum[k]) * (a.global_spectrum[k] - b.global_spectrum[k]);
+  const double d = std::sqrt(sum / static_cast<double>(n));
+  return o.global_spectrum_weight * d / (d + o.global_spectrum_scale);
+}
+
 /// global_shape_weight * g(A, B) + global_geodesic_weight * g_g(A, B) +
-/// global_spectrum_weight * g_s(A, B) (g_s: the mean absolute difference,
-/// twice the half L1 distance over the entries).
+/// global_spectrum_weight * g_s(A, B).
 double global_shape_term(const MatchableGraph& a, const MatchableGraph& b, const MatchingOptions& o) {
   return weighted_half_l1(a.global_shape, b.global_shape, o.global_shape_weight) +
          weighted_half_l1(a.global_geodesic, b.global_geodesic, o.global_geodesic_weight) +
-         weighted_half_l1(a.global_spectrum, b.global_spectrum, 2.0 * o.global_spectrum_weight / kGlobalSpectrumLength);
+         global_spectrum_term(a, b, o);
 }
 
 }  // namespace
@@ -226,7 +237,12 @@ MatchableGraph make_matchable_graph(const GraphRecord& entry) {
                           std::to_string(entry.signature.size()) + " entries, not " + std::to_string(kSignatureLength));
   g.global_shape.assign(entry.signature.begin() + kSigGlobalShape, entry.signature.begin() + kSigGlobalGeodesic);
   g.global_geodesic.assign(entry.signature.begin() + kSigGlobalGeodesic, entry.signature.begin() + kSigGlobalSpectrum);
-  g.global_spectrum.assign(entry.signature.begin() + kSigGlobalSpectrum, entry.signature.end());
+  // The signature's y = s / (1 + s) back to ln s = ln(y / (1 - y)).
+  g.global_spectrum.resize(static_cast<std::size_t>(kGlobalSpectrumLength));
+  for (std::size_t k = 0; k < g.global_spectrum.size(); ++k) {
+    const double y = std::clamp(entry.signature[static_cast<std::size_t>(kSigGlobalSpectrum) + k], 1e-12, 1.0 - 1e-12);
+    g.global_spectrum[k] = std::log(y / (1.0 - y));
+  }
   const auto attribute = [&](std::size_t i, NodeAttribute c) { return entry.node_attributes[i * kNodeAttributeCount + c]; };
   for (std::size_t i = 0; i < n; ++i) g.relative_area[i] = attribute(i, kNodeRelativeArea);
   g.features.resize(n * MatchableGraph::kFeatureCount);

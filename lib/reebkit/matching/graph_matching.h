@@ -43,9 +43,14 @@ namespace reebkit {
 /// - g_g: half the L1 distance of the whole surfaces' geodesic histograms
 ///   (signature entries from kSigGlobalGeodesic: area by position along and
 ///   off the main axis, invariant to bending);
-/// - g_s: mean absolute difference of the whole surfaces' Laplace-Beltrami
-///   spectra (signature entries from kSigGlobalSpectrum, invariant to
-///   bending).
+/// - g_s: d / (d + global_spectrum_scale), d the root mean square of
+///   ln(lambda_k(A) / lambda_k(B)) over the first global_spectrum_eigenvalues
+///   eigenvalues of the whole surfaces' area-normalised Laplace-Beltrami
+///   spectra (signature entries from kSigGlobalSpectrum; invariant to
+///   bending): relative differences, so that each eigenvalue counts alike,
+///   and saturating, so that the spectrum ranks the shapes whose spectra are
+///   near (two people, one body in two poses) while the graph ranks the
+///   others (two classes differ in both; the graph tells which are nearer).
 /// Defaults: every term intrinsic (unchanged when the surface bends), the
 /// Euclidean ones h and g off; the weights chosen on SHREC07 and the
 /// body-shape benchmark together, the demo's variants as guard, and reported
@@ -56,13 +61,20 @@ struct MatchingOptions {
   double edge_weight = 0.25;       ///< weight of e(i, j)
   double profile_weight = 16.0;    ///< weight of p(i, j)
   double shape_weight = 0.0;       ///< weight of h(i, j): Euclidean, follows the pose
-  double geodesic_shape_weight = 2.0;  ///< weight of h_g(i, j)
+  double geodesic_shape_weight = 0.0;  ///< weight of h_g(i, j)
   double global_shape_weight = 0.0;  ///< weight of g(A, B): Euclidean, follows the pose
   double global_geodesic_weight = 0.8;  ///< weight of g_g(A, B)
-  double spectrum_weight = 8.0;          ///< weight of r(i, j)
+  double spectrum_weight = 4.0;          ///< weight of r(i, j)
   double global_spectrum_weight = 8.0;   ///< weight of g_s(A, B)
-  double unmatched_cost = 1.5;     ///< cost of deleting or inserting a node, per unit of node weight
-  double min_node_weight = 0.01;   ///< added to the relative area so that area-less nodes still count
+  /// How many of the kGlobalSpectrumLength eigenvalues g_s compares (the
+  /// lowest), in [1, kGlobalSpectrumLength]: the first ones carry the
+  /// proportions of a shape, the later ones more of its details and of its
+  /// triangulation.
+  int global_spectrum_eigenvalues = 8;
+  /// The root mean square log ratio d at which g_s is 1/2; > 0.
+  double global_spectrum_scale = 0.005;
+  double unmatched_cost = 1.0;     ///< cost of deleting or inserting a node, per unit of node weight
+  double min_node_weight = 0.05;   ///< added to the relative area so that area-less nodes still count
   /// Rounds of edge-consistency refinement: the assignment is solved again
   /// with e(i, j) from the previous correspondence (the first solve has e =
   /// 0), until it no longer changes. 0: one solve, node costs only.
@@ -94,7 +106,11 @@ struct MatchableGraph {
   std::vector<char> adjacent;             ///< num_nodes x num_nodes, 1 where an edge joins the nodes
   std::vector<double> global_shape;       ///< kGlobalShapeBins: the D2 of the whole surface (signature)
   std::vector<double> global_geodesic;    ///< kGlobalShapeBins: its geodesic histogram (signature)
-  std::vector<double> global_spectrum;    ///< kGlobalSpectrumLength: its Laplace-Beltrami spectrum (signature)
+  /// kGlobalSpectrumLength: ln(lambda_k x area / (4 pi k)) of its
+  /// Laplace-Beltrami spectrum (from the signature's squashed values); the
+  /// zeros of a spectrum that could not be computed give ln(1e-12), far from
+  /// any spectrum but that of another such surface.
+  std::vector<double> global_spectrum;
 };
 
 /// The matchable form of an entry's graph.

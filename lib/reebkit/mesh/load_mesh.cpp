@@ -4,10 +4,22 @@
 
 namespace reebkit {
 
-CleanedMesh load_mesh(const std::filesystem::path& path, const CleanupOptions& options) {
-  PolygonSoup soup = read_polygon_soup(path);
+namespace {
+
+CleanedMesh cleaned(PolygonSoup soup, const std::filesystem::path& path, const CleanupOptions& options) {
   if (soup.source.empty()) soup.source = path.string();  // so that cleanup errors name the file
   return clean_mesh(soup, options);
+}
+
+}  // namespace
+
+CleanedMesh load_mesh(const std::filesystem::path& path, const CleanupOptions& options) {
+  return cleaned(read_polygon_soup(path), path, options);
+}
+
+CleanedMesh load_mesh_bytes(std::string_view bytes, const std::filesystem::path& path,
+                            const CleanupOptions& options) {
+  return cleaned(parse_polygon_soup(bytes, path), path, options);
 }
 
 }  // namespace reebkit

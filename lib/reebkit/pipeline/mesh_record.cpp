@@ -2,6 +2,8 @@
 
 #include "reebkit/core/error.h"
 #include "reebkit/core/timer.h"
+#include "reebkit/io/content_hash.h"
+#include "reebkit/io/file_bytes.h"
 #include "reebkit/mesh/hole_filling.h"
 #include "reebkit/mesh/load_mesh.h"
 
@@ -49,10 +51,13 @@ GraphRecord make_graph_record(const MeshAnalysis& analysis, const GraphAttribute
   return out;
 }
 
-GraphRecord analyze_mesh_file(const std::filesystem::path& path, std::string name,
-                              const AnalysisOptions& options) {
+GraphRecord analyze_mesh_file(const std::filesystem::path& path, std::string name, const AnalysisOptions& options,
+                              std::uint64_t* content_hash) {
   Timer timer;
-  CleanedMesh cleaned = load_mesh(path);
+  const std::string bytes = read_file_bytes(path);
+  const std::uint64_t hash = hash_bytes(bytes);
+  if (content_hash) *content_hash = hash;
+  CleanedMesh cleaned = load_mesh_bytes(bytes, path);
   const double load_ms = timer.lap();
   const MeshAnalysis analysis = analyze_mesh(std::move(cleaned.components.front()), options);
   timer.lap();
@@ -60,6 +65,7 @@ GraphRecord analyze_mesh_file(const std::filesystem::path& path, std::string nam
   const double attributes_ms = timer.lap();
   GraphRecord entry = make_graph_record(analysis, attributes);
   entry.name = std::move(name);
+  entry.content_hash = hash;
   entry.timings[kTimeLoad] = load_ms;
   entry.timings[kTimeAttributes] = attributes_ms;
   return entry;

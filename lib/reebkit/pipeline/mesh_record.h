@@ -8,6 +8,7 @@
 #include "reebkit/attributes/graph_record.h"
 #include "reebkit/pipeline/analyze_mesh.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 
@@ -26,9 +27,12 @@ GraphRecord make_graph_record(const MeshAnalysis& analysis, const GraphAttribute
 
 /// Reads the mesh file at `path` (its largest component), analyses it,
 /// computes its attributes and returns its entry, named `name`, with the
-/// load and attribute times filled in. Errors propagate (they name the file).
+/// load and attribute times and the content hash (io/content_hash.h) of the
+/// bytes it read filled in: the file is read once. Errors propagate (they
+/// name the file); `content_hash`, when given, holds the hash as soon as the
+/// file is read, for the failed entry of a file that cannot be analysed.
 GraphRecord analyze_mesh_file(const std::filesystem::path& path, std::string name,
-                              const AnalysisOptions& options = {});
+                              const AnalysisOptions& options = {}, std::uint64_t* content_hash = nullptr);
 
 /// A failed entry: ok = false, `error`, NaN signature, no graph.
 GraphRecord failed_graph_record(std::string name, std::string class_label, std::uint64_t content_hash,
