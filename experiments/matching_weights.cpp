@@ -207,7 +207,8 @@ int main(int argc, char** argv) {
            o.geodesic_shape_weight = 2, o.profile_weight = 32, o.unmatched_cost = 1.5;
            o.global_geodesic_weight = 0, o.min_node_weight = 0.01;
          }},
-        {"no spectra (spectrum 0, global spectrum 0)", [](Options& o) { o.spectrum_weight = o.global_spectrum_weight = 0; }},
+        {"no spectra (spectrum 0, global spectrum 0)",
+         [](Options& o) { o.spectrum_weight = o.global_spectrum_weight = 0; }},
         {"global spectrum only (every other term 0)",
          [](Options& o) {
            o.attribute_weight = o.structure_weight = o.edge_weight = o.profile_weight = o.shape_weight = 0;
@@ -271,12 +272,13 @@ int main(int argc, char** argv) {
                     std::to_string(floor->ft).substr(0, 5) + ")"
               : "";
 
-    std::printf("\n## Grid and the choice\n\n%zu settings (spectrum 0, 4, 8 x global spectrum 2, 4, 8, 16 x its "
-                "eigenvalues 8, 12, 16 x its scale 0.005, 0.01, 0.02, 0.05 x geodesic shape 0, 2 x unmatched 1, 1.5; "
-                "profile 16, shape and global D2 0; min node weight 0.01, attribute 4, global geodesic 0; the other "
-                "weights at their defaults), %.0f s on the choosing collections. Score: the mean of NN, FT and DCG. "
-                "Each row is scored on every collection; the reporting ones played no part in the choice.\n\n%s",
-                grid.size(), seconds, header(all).c_str());
+    std::printf(
+        "\n## Grid and the choice\n\n%zu settings (spectrum 0, 4, 8 x global spectrum 2, 4, 8, 16 x its "
+        "eigenvalues 8, 12, 16 x its scale 0.005, 0.01, 0.02, 0.05 x geodesic shape 0, 2 x unmatched 1, 1.5; "
+        "profile 16, shape and global D2 0; min node weight 0.01, attribute 4, global geodesic 0; the other "
+        "weights at their defaults), %.0f s on the choosing collections. Score: the mean of NN, FT and DCG. "
+        "Each row is scored on every collection; the reporting ones played no part in the choice.\n\n%s",
+        grid.size(), seconds, header(all).c_str());
     for (std::size_t c = 0; c < choose.size(); ++c) {
       std::size_t best = 0;
       for (std::size_t k = 1; k < grid.size(); ++k)  // first best in grid order on ties

@@ -194,7 +194,8 @@ double global_spectrum_term(const MatchableGraph& a, const MatchableGraph& b, co
   if (o.global_spectrum_weight == 0.0) return 0.0;
   const auto n = static_cast<std::size_t>(o.global_spectrum_eigenvalues);
   double sum = 0.0;
-  for (std::size_t k = 0; k < n; ++k) sum += (a.global_spectrum[k] - b.global_spectrum[k]) * (a.global_spectrum[k] - b.global_spectrum[k]);
+  for (std::size_t k = 0; k < n; ++k)
+    sum += (a.global_spectrum[k] - b.global_spectrum[k]) * (a.global_spectrum[k] - b.global_spectrum[k]);
   const double d = std::sqrt(sum / static_cast<double>(n));
   return o.global_spectrum_weight * d / (d + o.global_spectrum_scale);
 }

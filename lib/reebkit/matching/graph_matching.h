@@ -64,7 +64,7 @@ struct MatchingOptions {
   double geodesic_shape_weight = 0.0;  ///< weight of h_g(i, j)
   double global_shape_weight = 0.0;  ///< weight of g(A, B): Euclidean, follows the pose
   double global_geodesic_weight = 0.8;  ///< weight of g_g(A, B)
-  double spectrum_weight = 4.0;          ///< weight of r(i, j)
+  double spectrum_weight = 4.0;         ///< weight of r(i, j)
   double global_spectrum_weight = 8.0;   ///< weight of g_s(A, B)
   /// How many of the kGlobalSpectrumLength eigenvalues g_s compares (the
   /// lowest), in [1, kGlobalSpectrumLength]: the first ones carry the
@@ -73,8 +73,8 @@ struct MatchingOptions {
   int global_spectrum_eigenvalues = 8;
   /// The root mean square log ratio d at which g_s is 1/2; > 0.
   double global_spectrum_scale = 0.005;
-  double unmatched_cost = 1.0;     ///< cost of deleting or inserting a node, per unit of node weight
-  double min_node_weight = 0.05;   ///< added to the relative area so that area-less nodes still count
+  double unmatched_cost = 1.0;    ///< cost of deleting or inserting a node, per unit of node weight
+  double min_node_weight = 0.05;  ///< added to the relative area so that area-less nodes still count
   /// Rounds of edge-consistency refinement: the assignment is solved again
   /// with e(i, j) from the previous correspondence (the first solve has e =
   /// 0), until it no longer changes. 0: one solve, node costs only.

@@ -14,6 +14,8 @@ MatchingOptionField field(const char* name, const char* help, Access access, Opt
 
 const std::vector<MatchingOptionField>& matching_option_fields() {
   const OptionRange weight{0};  // a term's weight: 0 leaves the term out
+  // A table, one option per row.
+  // clang-format off
   static const std::vector<MatchingOptionField> fields = {
       field("attribute_weight", "weight of a: node attribute differences (area, f_q range, extent, radius)",
             [](auto& o) -> auto& { return o.attribute_weight; }, weight),
@@ -46,6 +48,7 @@ const std::vector<MatchingOptionField>& matching_option_fields() {
       field("refine_rounds", "rounds of edge-consistency refinement",
             [](auto& o) -> auto& { return o.refine_rounds; }, OptionRange{0}),
   };
+  // clang-format on
   return fields;
 }
 

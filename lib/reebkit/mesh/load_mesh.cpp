@@ -17,8 +17,7 @@ CleanedMesh load_mesh(const std::filesystem::path& path, const CleanupOptions& o
   return cleaned(read_polygon_soup(path), path, options);
 }
 
-CleanedMesh load_mesh_bytes(std::string_view bytes, const std::filesystem::path& path,
-                            const CleanupOptions& options) {
+CleanedMesh load_mesh_bytes(std::string_view bytes, const std::filesystem::path& path, const CleanupOptions& options) {
   return cleaned(parse_polygon_soup(bytes, path), path, options);
 }
 

@@ -31,8 +31,8 @@ GraphRecord make_graph_record(const MeshAnalysis& analysis, const GraphAttribute
 /// bytes it read filled in: the file is read once. Errors propagate (they
 /// name the file); `content_hash`, when given, holds the hash as soon as the
 /// file is read, for the failed entry of a file that cannot be analysed.
-GraphRecord analyze_mesh_file(const std::filesystem::path& path, std::string name,
-                              const AnalysisOptions& options = {}, std::uint64_t* content_hash = nullptr);
+GraphRecord analyze_mesh_file(const std::filesystem::path& path, std::string name, const AnalysisOptions& options = {},
+                              std::uint64_t* content_hash = nullptr);
 
 /// A failed entry: ok = false, `error`, NaN signature, no graph.
 GraphRecord failed_graph_record(std::string name, std::string class_label, std::uint64_t content_hash,
