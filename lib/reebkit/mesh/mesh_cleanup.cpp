@@ -198,18 +198,30 @@ std::vector<Index> triangulate_soup(const PolygonSoup& soup, const std::vector<I
 }
 
 /// Removes every triangle whose vertex set equals that of an earlier one.
-/// Returns how many were removed.
-Index drop_duplicate_triangles(std::vector<Index>& triangles) {
+/// Returns how many were removed. The triangles are bucketed by their
+/// smallest vertex (a counting sort, in file order within a bucket), and each
+/// is compared with the earlier ones of its bucket only: a handful on a
+/// manifold mesh (the triangles around one vertex), so linear time.
+Index drop_duplicate_triangles(std::vector<Index>& triangles, Index num_vertices) {
   const std::size_t count = triangles.size() / 3;
-  std::vector<std::array<Index, 4>> keys(count);  // sorted vertex ids, then triangle
+  std::vector<std::array<Index, 3>> sorted(count);
+  std::vector<Index> start(static_cast<std::size_t>(num_vertices) + 1, 0);
   for (std::size_t t = 0; t < count; ++t) {
-    keys[t] = {triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2], static_cast<Index>(t)};
-    std::sort(keys[t].begin(), keys[t].begin() + 3);
+    sorted[t] = {triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2]};
+    std::sort(sorted[t].begin(), sorted[t].end());
+    ++start[static_cast<std::size_t>(sorted[t][0]) + 1];
   }
-  std::sort(keys.begin(), keys.end());
+  for (std::size_t v = 0; v < static_cast<std::size_t>(num_vertices); ++v) start[v + 1] += start[v];
+  std::vector<Index> bucket(count), fill(start.begin(), start.end() - 1);
+  for (std::size_t t = 0; t < count; ++t)
+    bucket[static_cast<std::size_t>(fill[static_cast<std::size_t>(sorted[t][0])]++)] = static_cast<Index>(t);
   std::vector<bool> duplicate(count, false);
-  for (std::size_t i = 1; i < count; ++i)
-    duplicate[keys[i][3]] = std::equal(keys[i].begin(), keys[i].begin() + 3, keys[i - 1].begin());
+  for (std::size_t v = 0; v < static_cast<std::size_t>(num_vertices); ++v)
+    for (Index i = start[v] + 1; i < start[v + 1]; ++i) {
+      const auto t = static_cast<std::size_t>(bucket[static_cast<std::size_t>(i)]);
+      for (Index j = start[v]; j < i && !duplicate[t]; ++j)
+        duplicate[t] = sorted[static_cast<std::size_t>(bucket[static_cast<std::size_t>(j)])] == sorted[t];
+    }
   std::size_t kept = 0;
   for (std::size_t t = 0; t < count; ++t) {
     if (duplicate[t]) continue;
@@ -302,7 +314,7 @@ CleanedMesh clean_mesh(const PolygonSoup& soup, const CleanupOptions& options) {
     report.warnings.push_back(where + "dropped " +
                               count_of(report.degenerate_faces_dropped, "degenerate polygon", "degenerate polygons") +
                               " (fewer than 3 distinct vertices, or a repeated vertex)");
-  report.duplicate_faces_dropped = drop_duplicate_triangles(triangles);
+  report.duplicate_faces_dropped = drop_duplicate_triangles(triangles, soup.num_vertices());
   if (report.duplicate_faces_dropped > 0)
     report.warnings.push_back(where + "dropped " +
                               count_of(report.duplicate_faces_dropped, "duplicate triangle", "duplicate triangles") +
