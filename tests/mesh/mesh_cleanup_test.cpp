@@ -149,6 +149,28 @@ TEST(CleanMesh, DuplicateFacesInEitherOrientationAreDropped) {
   EXPECT_NE(cleaned.report.warnings[0].find("3 duplicate triangles"), std::string::npos);
 }
 
+// A disk triangulated as a fan around its centre: every triangle shares the
+// smallest vertex, so the duplicates are found in one large bucket.
+TEST(CleanMesh, DuplicatesInALargeFanAreDroppedAndTheFirstKept) {
+  const int n = 200;
+  std::vector<std::array<double, 3>> points = {{0, 0, 0}};
+  std::vector<std::vector<Index>> faces;
+  for (int k = 0; k < n; ++k) {
+    const double a = 2 * std::acos(-1.0) * k / n;
+    points.push_back({std::cos(a), std::sin(a), 0});
+  }
+  for (int k = 0; k < n; ++k) faces.push_back({0, 1 + k, 1 + (k + 1) % n});
+  for (int k = 0; k < n; k += 10) faces.push_back({1 + (k + 1) % n, 1 + k, 0});  // reversed copies
+  for (int k = 5; k < n; k += 20) faces.push_back({1 + k, 1 + (k + 1) % n, 0});  // rotated copies
+  const CleanedMesh cleaned = clean_mesh(make_soup(points, faces));
+  EXPECT_EQ(cleaned.report.duplicate_faces_dropped, n / 10 + n / 20);
+  const Mesh& mesh = cleaned.components[0];
+  ASSERT_EQ(mesh.num_triangles(), n);
+  for (int k = 0; k < n; ++k)  // the fan's own triangles, in file order
+    EXPECT_EQ(mesh.triangles.row(k), (Eigen::RowVector3i(0, 1 + k, 1 + (k + 1) % n))) << k;
+  EXPECT_EQ(cleaned.report.non_manifold_edges, 0);
+}
+
 TEST(CleanMesh, UnreferencedVerticesAreDroppedAndSourceVertexMapsBack) {
   const PolygonSoup soup = make_soup({{0, 0, 0}, {1, 0, 0}, {9, 9, 9}, {0, 1, 0}, {1, 1, 0}, {8, 8, 8}},
                                      {{0, 1, 3}, {1, 4, 3}});

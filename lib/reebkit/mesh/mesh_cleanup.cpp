@@ -201,7 +201,8 @@ std::vector<Index> triangulate_soup(const PolygonSoup& soup, const std::vector<I
 /// Returns how many were removed. The triangles are bucketed by their
 /// smallest vertex (a counting sort, in file order within a bucket), and each
 /// is compared with the earlier ones of its bucket only: a handful on a
-/// manifold mesh (the triangles around one vertex), so linear time.
+/// manifold mesh (the triangles around one vertex), so linear time; a large
+/// bucket is sorted instead.
 Index drop_duplicate_triangles(std::vector<Index>& triangles, Index num_vertices) {
   const std::size_t count = triangles.size() / 3;
   std::vector<std::array<Index, 3>> sorted(count);
@@ -216,12 +217,20 @@ Index drop_duplicate_triangles(std::vector<Index>& triangles, Index num_vertices
   for (std::size_t t = 0; t < count; ++t)
     bucket[static_cast<std::size_t>(fill[static_cast<std::size_t>(sorted[t][0])]++)] = static_cast<Index>(t);
   std::vector<bool> duplicate(count, false);
-  for (std::size_t v = 0; v < static_cast<std::size_t>(num_vertices); ++v)
-    for (Index i = start[v] + 1; i < start[v + 1]; ++i) {
-      const auto t = static_cast<std::size_t>(bucket[static_cast<std::size_t>(i)]);
-      for (Index j = start[v]; j < i && !duplicate[t]; ++j)
-        duplicate[t] = sorted[static_cast<std::size_t>(bucket[static_cast<std::size_t>(j)])] == sorted[t];
+  const auto triple = [&](Index t) { return sorted[static_cast<std::size_t>(t)]; };
+  for (std::size_t v = 0; v < static_cast<std::size_t>(num_vertices); ++v) {
+    const auto first = bucket.begin() + start[v], last = bucket.begin() + start[v + 1];
+    if (last - first > 16) {  // a large fan (a disk triangulated around its centre): sorted, not pairwise
+      std::sort(first, last,
+                [&](Index a, Index b) { return std::make_pair(triple(a), a) < std::make_pair(triple(b), b); });
+      for (auto it = first + 1; it < last; ++it)
+        duplicate[static_cast<std::size_t>(*it)] = triple(*it) == triple(*(it - 1));
+      continue;
     }
+    for (auto it = first + 1; it < last; ++it)
+      for (auto earlier = first; earlier < it && !duplicate[static_cast<std::size_t>(*it)]; ++earlier)
+        duplicate[static_cast<std::size_t>(*it)] = triple(*earlier) == triple(*it);
+  }
   std::size_t kept = 0;
   for (std::size_t t = 0; t < count; ++t) {
     if (duplicate[t]) continue;
