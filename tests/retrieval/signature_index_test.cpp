@@ -85,6 +85,27 @@ TEST(SignatureIndex, ExactNearestNeighboursForBothKinds) {
   }
 }
 
+TEST(SignatureIndex, ASavedKdTreeLoadsAndFindsTheSameNeighbours) {
+  const std::vector<double> rows = signatures();
+  const SignatureIndex built(rows, kDim);
+  const std::vector<char> saved = built.save();
+  const SignatureIndex loaded(built.rows(), built.row_of(), kDim, saved);
+  EXPECT_EQ(loaded.size(), built.size());
+  std::mt19937_64 rng(13);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int trial = 0; trial < 20; ++trial) {
+    std::vector<double> q(kDim);
+    for (double& v : q) v = u(rng);
+    for (const std::int64_t k : {1, 10, 100}) expect_same(loaded.nearest(q, k), brute_force(rows, q, k));
+  }
+  EXPECT_THROW(SignatureIndex(built.rows(), {0, 1}, kDim, saved), InvalidArgument);  // sizes disagree
+  std::vector<char> damaged(saved.begin(), saved.begin() + 8);
+  EXPECT_THROW(SignatureIndex(built.rows(), built.row_of(), kDim, damaged), InvalidArgument);
+  SignatureIndexOptions linear;
+  linear.kind = SignatureIndexKind::Linear;
+  EXPECT_THROW(SignatureIndex(rows, kDim, linear).save(), InvalidArgument);
+}
+
 TEST(SignatureIndex, RejectsBadInput) {
   EXPECT_THROW(SignatureIndex({1, 2, 3}, 2), InvalidArgument);
   EXPECT_THROW(SignatureIndex({}, 0), InvalidArgument);

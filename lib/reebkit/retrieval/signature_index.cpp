@@ -6,16 +6,25 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <string>
 
 namespace reebkit {
 
+namespace {
+using FlannIndex = flann::NNIndex<flann::L2<double>>;
+using KdTree = flann::KDTreeSingleIndex<flann::L2<double>>;
+}  // namespace
+
 struct SignatureIndex::Impl {
   int dimension = 0;
   std::vector<double> rows;           ///< the indexed signatures, packed
   std::vector<std::int64_t> row_of;   ///< packed row -> row of the input matrix
-  std::unique_ptr<flann::Index<flann::L2<double>>> index;
+  std::unique_ptr<FlannIndex> index;
+
+  flann::Matrix<double> data() { return {rows.data(), row_of.size(), static_cast<std::size_t>(dimension)}; }
 };
 
 SignatureIndex::SignatureIndex(const std::vector<double>& signatures, int dimension,
@@ -34,19 +43,64 @@ SignatureIndex::SignatureIndex(const std::vector<double>& signatures, int dimens
     impl_->row_of.push_back(static_cast<std::int64_t>(r));
   }
   if (impl_->row_of.empty()) return;
-  const flann::Matrix<double> data(impl_->rows.data(), impl_->row_of.size(), d);
-  const flann::IndexParams params = options.kind == SignatureIndexKind::Linear
-                                        ? flann::IndexParams(flann::LinearIndexParams())
-                                        : flann::IndexParams(flann::KDTreeSingleIndexParams(options.leaf_max_size));
-  impl_->index = std::make_unique<flann::Index<flann::L2<double>>>(data, params);
+  if (options.kind == SignatureIndexKind::Linear)
+    impl_->index = std::make_unique<flann::LinearIndex<flann::L2<double>>>(impl_->data(), flann::LinearIndexParams());
+  else
+    impl_->index =
+        std::make_unique<KdTree>(impl_->data(), flann::KDTreeSingleIndexParams(options.leaf_max_size, false));
   impl_->index->buildIndex();
+}
+
+SignatureIndex::SignatureIndex(std::vector<double> rows, std::vector<std::int64_t> row_of, int dimension,
+                               const std::vector<char>& saved)
+    : impl_(std::make_unique<Impl>()) {
+  if (dimension < 1 || rows.size() != row_of.size() * static_cast<std::size_t>(dimension))
+    throw InvalidArgument("signature index: " + std::to_string(rows.size()) + " values are not " +
+                          std::to_string(row_of.size()) + " rows of " + std::to_string(dimension));
+  impl_->dimension = dimension;
+  impl_->rows = std::move(rows);
+  impl_->row_of = std::move(row_of);
+  if (impl_->row_of.empty()) return;
+  auto tree = std::make_unique<KdTree>(impl_->data(), flann::KDTreeSingleIndexParams(10, false));
+  FILE* in = fmemopen(const_cast<char*>(saved.data()), saved.size(), "rb");
+  if (in == nullptr) throw InvalidArgument("signature index: cannot read the saved k-d tree");
+  try {
+    tree->loadIndex(in);
+  } catch (const flann::FLANNException& e) {
+    std::fclose(in);
+    throw InvalidArgument(std::string("signature index: the saved k-d tree does not load: ") + e.what());
+  }
+  std::fclose(in);
+  if (tree->size() != impl_->row_of.size() || tree->veclen() != static_cast<std::size_t>(dimension))
+    throw InvalidArgument("signature index: the saved k-d tree indexes " + std::to_string(tree->size()) + " rows of " +
+                          std::to_string(tree->veclen()) + ", not " + std::to_string(impl_->row_of.size()) + " of " +
+                          std::to_string(dimension));
+  impl_->index = std::move(tree);
 }
 
 SignatureIndex::~SignatureIndex() = default;
 SignatureIndex::SignatureIndex(SignatureIndex&&) noexcept = default;
+SignatureIndex& SignatureIndex::operator=(SignatureIndex&&) noexcept = default;
 
 std::int64_t SignatureIndex::size() const { return static_cast<std::int64_t>(impl_->row_of.size()); }
 int SignatureIndex::dimension() const { return impl_->dimension; }
+const std::vector<double>& SignatureIndex::rows() const { return impl_->rows; }
+const std::vector<std::int64_t>& SignatureIndex::row_of() const { return impl_->row_of; }
+
+std::vector<char> SignatureIndex::save() const {
+  if (impl_->row_of.empty()) return {};
+  if (dynamic_cast<const KdTree*>(impl_->index.get()) == nullptr)
+    throw InvalidArgument("signature index: only a k-d tree is saved");
+  char* buffer = nullptr;
+  std::size_t bytes = 0;
+  FILE* out = open_memstream(&buffer, &bytes);
+  if (out == nullptr) throw InvalidArgument("signature index: cannot open a memory stream");
+  impl_->index->saveIndex(out);
+  std::fclose(out);
+  std::vector<char> saved(buffer, buffer + bytes);
+  std::free(buffer);  // NOLINT(cppcoreguidelines-no-malloc): open_memstream's buffer
+  return saved;
+}
 
 std::vector<SignatureNeighbour> SignatureIndex::nearest(const std::vector<double>& query, std::int64_t count) const {
   if (query.size() != static_cast<std::size_t>(impl_->dimension))

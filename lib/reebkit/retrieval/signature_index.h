@@ -4,7 +4,9 @@
 // candidates for graph matching are the entries whose signatures are nearest
 // to the query's in the Euclidean distance. FLANN (Muja and Lowe 2014) with
 // an exact, deterministic index: a linear scan or a single k-d tree searched
-// without approximation.
+// without approximation. The k-d tree keeps the rows in their order (FLANN's
+// `reorder` off), so that its saved form (save()) is the tree alone and
+// loads beside the rows in one read each (store/collection_file.h, QueryFile).
 #pragma once
 
 #include <cstdint>
@@ -36,12 +38,26 @@ class SignatureIndex {
   /// `signatures`: rows x `dimension`, row-major. Throws InvalidArgument when
   /// the size is not a multiple of `dimension` or `dimension` < 1.
   SignatureIndex(const std::vector<double>& signatures, int dimension, const SignatureIndexOptions& options = {});
+  /// The k-d tree that save() wrote for `rows` (the rows without NaN of a
+  /// signature matrix, packed, rows.size() / dimension of them) and
+  /// `row_of` (their rows in that matrix), without building it anew. Throws
+  /// InvalidArgument when the sizes disagree or `saved` is not such a tree.
+  SignatureIndex(std::vector<double> rows, std::vector<std::int64_t> row_of, int dimension,
+                 const std::vector<char>& saved);
   ~SignatureIndex();
   SignatureIndex(SignatureIndex&&) noexcept;
+  SignatureIndex& operator=(SignatureIndex&&) noexcept;
 
   /// Indexed rows (rows without NaN).
   std::int64_t size() const;
   int dimension() const;
+  /// The indexed rows (packed, size() x dimension()) and their rows in the
+  /// signature matrix, as the loading constructor takes them.
+  const std::vector<double>& rows() const;
+  const std::vector<std::int64_t>& row_of() const;
+  /// The k-d tree as bytes (FLANN's serialization), for the loading
+  /// constructor. Throws InvalidArgument for a linear index.
+  std::vector<char> save() const;
   /// The min(count, size()) rows nearest to `query` (dimension() entries),
   /// by increasing distance, ties by increasing row. Throws InvalidArgument
   /// on a query of the wrong length or holding a NaN.

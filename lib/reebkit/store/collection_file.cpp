@@ -37,6 +37,8 @@
 #include <functional>
 #include <limits>
 #include <new>
+#include <numeric>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 #include <type_traits>
@@ -551,21 +553,27 @@ struct Tables {
   }
 };
 
+/// Opens the dataset `name` of `file` as a table of `spec`'s type and columns.
+Table open_table(const H5::H5File& file, const char* name, const Dataset& spec) {
+  Table t;
+  t.dataset = file.openDataSet(name);
+  t.type = *spec.type;
+  t.width = spec.columns.size();
+  hsize_t dims[2] = {0, 0};
+  const H5::DataSpace space = t.dataset.getSpace();
+  if (space.getSimpleExtentNdims() != t.rank())
+    throw H5::DataSetIException("open", std::string(name) + ": unexpected rank");
+  space.getSimpleExtentDims(dims);
+  if (t.width != 0 && dims[1] != t.width)
+    throw H5::DataSetIException("open", std::string(name) + ": unexpected column count");
+  t.rows = dims[0];
+  return t;
+}
+
 /// Opens every dataset of `file` (reading, or appending after the rows it has).
 Tables open_tables(const H5::H5File& file) {
   Tables tables;
-  for (const Dataset& spec : datasets()) {
-    Table& t = tables.table.emplace_back();
-    t.dataset = file.openDataSet(spec.name);
-    t.type = *spec.type;
-    t.width = spec.columns.size();
-    hsize_t dims[2] = {0, 0};
-    const H5::DataSpace space = t.dataset.getSpace();
-    if (space.getSimpleExtentNdims() != t.rank()) throw H5::DataSetIException("open", "unexpected rank");
-    space.getSimpleExtentDims(dims);
-    if (t.width != 0 && dims[1] != t.width) throw H5::DataSetIException("open", "unexpected column count");
-    t.rows = dims[0];
-  }
+  for (const Dataset& spec : datasets()) tables.table.push_back(open_table(file, spec.name, spec));
   tables.count = file.openDataSet("count");
   return tables;
 }
@@ -608,7 +616,6 @@ struct Snapshot {
   std::int64_t size = 0;
   std::vector<std::string> names, class_labels;
   std::vector<std::uint64_t> hashes;
-  std::vector<double> signatures;
   /// The offsets (size + 1, checked) into each part an entry has rows of.
   std::array<std::vector<std::int64_t>, kPartCount> offsets;
   Provenance provenance;
@@ -671,7 +678,6 @@ Snapshot read_snapshot(const H5::H5File& file, const Tables& t) {
   s.names = read_strings(t, s, "name");
   s.class_labels = read_strings(t, s, "class");
   s.hashes = t.named("content_hash").read_vector<std::uint64_t>(0, g);
-  s.signatures = t.named("signature").read_vector<double>(0, g);
   s.provenance.reebkit_version = read_string_attribute(file, "reebkit_version");
   s.provenance.options = read_string_attribute(file, "options");
   s.provenance.command = read_string_attribute(file, "command");
@@ -757,6 +763,9 @@ void print_hdf5_error_stacks(bool on) { print_error_stacks = on; }
 struct CollectionReader::Impl : OpenCollection {
   fs::path path;
   std::unordered_map<std::string, std::int64_t> by_name;
+  /// The signature matrix, read on the first signatures() (a query with a
+  /// query file never reads it).
+  mutable std::optional<std::vector<double>> signatures;
 };
 
 CollectionReader::CollectionReader(const fs::path& path) : impl_(std::make_unique<Impl>()) {
@@ -774,7 +783,13 @@ std::int64_t CollectionReader::size() const { return impl_->snapshot.size; }
 const std::vector<std::string>& CollectionReader::names() const { return impl_->snapshot.names; }
 const std::vector<std::string>& CollectionReader::class_labels() const { return impl_->snapshot.class_labels; }
 const std::vector<std::uint64_t>& CollectionReader::content_hashes() const { return impl_->snapshot.hashes; }
-const std::vector<double>& CollectionReader::signatures() const { return impl_->snapshot.signatures; }
+const std::vector<double>& CollectionReader::signatures() const {
+  if (!impl_->signatures)
+    impl_->signatures = guarded(impl_->path, "reading the signatures", [&] {
+      return impl_->tables.named("signature").read_vector<double>(0, static_cast<hsize_t>(size()));
+    });
+  return *impl_->signatures;
+}
 const Provenance& CollectionReader::provenance() const { return impl_->snapshot.provenance; }
 
 std::optional<std::int64_t> CollectionReader::find(const std::string& name) const {
@@ -1053,6 +1068,244 @@ void CollectionWriter::close() {
     w.tables = Tables{};
     w.file.close();
   });
+}
+
+// ---------------------------------------------------------------------------
+// Query file
+
+namespace {
+
+/// Version of the query file's layout (its attribute `layout`).
+constexpr int kQueryFileLayout = 1;
+/// The collection's datasets a query file copies (with the offsets of their
+/// part): what graph matching reads of a candidate.
+constexpr std::array<const char*, 3> kQueryGraphDatasets = {"nodes", "node_attr", "edges"};
+/// Entries a query file is written from per read of the collection.
+constexpr std::int64_t kQueryWriteBatch = 4096;
+
+/// The offsets dataset of `part` in a query file.
+const char* query_offsets_name(Part part) { return part == kNode ? "node_offset" : "edge_offset"; }
+
+/// A contiguous, unfiltered dataset of `rows` rows of `spec`'s type and columns.
+Table create_contiguous(H5::H5File& file, const char* name, const Dataset& spec, hsize_t rows) {
+  Table t;
+  t.type = *spec.type;
+  t.width = spec.columns.size();
+  const hsize_t dims[2] = {rows, t.width};
+  t.dataset = file.createDataSet(name, t.type, H5::DataSpace(t.rank(), dims));
+  t.rows = rows;
+  return t;
+}
+
+/// Writes `n` rows from `data` at row `first` of a table of fixed size.
+void write_rows(const Table& t, const void* data, hsize_t first, hsize_t n) {
+  if (n == 0) return;
+  const auto [file_space, memory_space] = t.select_rows(first, n);
+  t.dataset.write(data, t.type, memory_space, file_space);
+}
+
+/// Rows [first, end) of each of `blocks` (increasing, disjoint), concatenated, in one read.
+std::vector<char> read_blocks(const Table& t, const std::vector<std::pair<hsize_t, hsize_t>>& blocks) {
+  H5::DataSpace file_space = t.dataset.getSpace();
+  file_space.selectNone();
+  hsize_t total = 0;
+  for (const auto& [first, end] : blocks) {
+    if (end <= first) continue;
+    const hsize_t start[2] = {first, 0};
+    const hsize_t count[2] = {end - first, t.width};
+    file_space.selectHyperslab(H5S_SELECT_OR, count, start);
+    total += end - first;
+  }
+  std::vector<char> out(static_cast<std::size_t>(total) * t.row_bytes());
+  if (total == 0) return out;
+  const hsize_t shape[2] = {total, t.width};
+  t.dataset.read(out.data(), t.type, H5::DataSpace(t.rank(), shape), file_space);
+  return out;
+}
+
+std::int64_t read_int_attribute(const H5::H5Object& object, const char* name) {
+  std::int64_t value = -1;
+  if (object.attrExists(name)) object.openAttribute(name).read(H5::PredType::NATIVE_INT64, &value);
+  return value;
+}
+
+void write_int_attribute(H5::H5Object& object, const char* name, std::int64_t value) {
+  object.createAttribute(name, H5::PredType::NATIVE_INT64, H5::DataSpace(H5S_SCALAR))
+      .write(H5::PredType::NATIVE_INT64, &value);
+}
+
+}  // namespace
+
+struct QueryFile::Impl {
+  fs::path path;
+  H5::H5File file;
+  std::vector<std::int64_t> row_of;
+  std::array<std::vector<std::int64_t>, kPartCount> offsets;  ///< kNode and kEdge: #entries + 1
+  Table signature, index;
+  std::array<Table, kQueryGraphDatasets.size()> graph;
+};
+
+QueryFile::QueryFile() : impl_(std::make_unique<Impl>()) {}
+QueryFile::QueryFile(QueryFile&&) noexcept = default;
+QueryFile& QueryFile::operator=(QueryFile&&) noexcept = default;
+QueryFile::~QueryFile() = default;
+
+fs::path QueryFile::path_of(const fs::path& collection) {
+  fs::path path = collection;
+  return path.replace_extension(".query.h5");
+}
+
+void QueryFile::write(const CollectionReader& collection, const std::vector<double>& rows,
+                      const std::vector<std::int64_t>& row_of, const std::vector<char>& saved_index) {
+  const CollectionReader::Impl& c = *collection.impl_;
+  const fs::path path = path_of(c.path);
+  fs::path temporary = path;
+  temporary += ".partial";
+  const Dataset& signature_spec = datasets()[dataset_index("signature")];
+  if (rows.size() != row_of.size() * signature_spec.columns.size())
+    throw InvalidArgument(path.string() + ": " + std::to_string(rows.size()) + " signature values are not " +
+                          std::to_string(row_of.size()) + " rows");
+  guarded(temporary, "writing", [&] {
+    H5::H5File file(temporary.string(), H5F_ACC_TRUNC);
+    const int layout = kQueryFileLayout;
+    file.createAttribute("layout", H5::PredType::NATIVE_INT, H5::DataSpace(H5S_SCALAR))
+        .write(H5::PredType::NATIVE_INT, &layout);
+    write_int_attribute(file, "collection_count", c.snapshot.size);
+    write_string_attribute(file, "collection_created", c.snapshot.provenance.created);
+    write_rows(create_contiguous(file, "signature", signature_spec, row_of.size()), rows.data(), 0, row_of.size());
+    const Dataset rows_spec = make_dataset("signature_row", type_of<std::int64_t>(), kEntry);
+    write_rows(create_contiguous(file, "signature_row", rows_spec, row_of.size()), row_of.data(), 0, row_of.size());
+    const Dataset bytes_spec = make_dataset("index", type_of<char>(), kEntry);
+    write_rows(create_contiguous(file, "index", bytes_spec, saved_index.size()), saved_index.data(), 0,
+               saved_index.size());
+    for (const Part part : {kNode, kEdge}) {
+      const std::vector<std::int64_t>& offset = c.snapshot.offsets[part];
+      const Dataset spec = make_dataset(query_offsets_name(part), type_of<std::int64_t>(), kEntry);
+      write_rows(create_contiguous(file, spec.name, spec, offset.size()), offset.data(), 0, offset.size());
+    }
+    std::vector<Table> graph;
+    for (const char* name : kQueryGraphDatasets) {
+      const Dataset& spec = datasets()[dataset_index(name)];
+      graph.push_back(create_contiguous(file, name, spec, static_cast<hsize_t>(c.snapshot.offsets[spec.part].back())));
+      if (!spec.columns.empty()) write_text_attribute(graph.back().dataset, "columns", spec.columns, false);
+    }
+    for (std::int64_t first = 0; first < c.snapshot.size; first += kQueryWriteBatch) {
+      const std::int64_t n = std::min(kQueryWriteBatch, c.snapshot.size - first);
+      const std::vector<GraphRecord> entries = read_entries(c.tables, c.snapshot, first, n);
+      for (std::size_t d = 0; d < kQueryGraphDatasets.size(); ++d) {
+        const Dataset& spec = datasets()[dataset_index(kQueryGraphDatasets[d])];
+        std::vector<char> data;
+        for (const GraphRecord& e : entries) spec.put(e, data);
+        const auto row0 = static_cast<hsize_t>(c.snapshot.offsets[spec.part][static_cast<std::size_t>(first)]);
+        write_rows(graph[d], data.data(), row0, data.size() / graph[d].row_bytes());
+      }
+    }
+    file.close();
+  });
+  std::error_code error;
+  fs::rename(temporary, path, error);
+  if (error) fail(path, "cannot replace it with " + temporary.string() + ": " + error.message());
+}
+
+std::optional<QueryFile> QueryFile::open(const CollectionReader& collection) {
+  const CollectionReader::Impl& c = *collection.impl_;
+  const fs::path path = path_of(c.path);
+  if (!fs::exists(path)) return std::nullopt;
+  if (H5Fis_hdf5(path.c_str()) <= 0) fail(path, "not an HDF5 file (remove it: queries then read the collection)");
+  QueryFile q;
+  Impl& f = *q.impl_;
+  f.path = path;
+  const bool current = guarded(path, "opening", [&] {
+    f.file = H5::H5File(path.string(), H5F_ACC_RDONLY);
+    return layout_version(f.file) == kQueryFileLayout &&
+           read_int_attribute(f.file, "collection_count") == c.snapshot.size &&
+           read_string_attribute(f.file, "collection_created") == c.snapshot.provenance.created;
+  });
+  if (!current) return std::nullopt;
+  guarded(path, "reading", [&] {
+    const Dataset& signature_spec = datasets()[dataset_index("signature")];
+    f.signature = open_table(f.file, "signature", signature_spec);
+    const Table rows = open_table(f.file, "signature_row", make_dataset("", type_of<std::int64_t>(), kEntry));
+    f.row_of = rows.read_vector<std::int64_t>(0, rows.rows);
+    if (f.signature.rows != rows.rows || !std::is_sorted(f.row_of.begin(), f.row_of.end()) ||
+        (!f.row_of.empty() && (f.row_of.front() < 0 || f.row_of.back() >= c.snapshot.size)))
+      throw H5::DataSetIException("read", "signature_row is not increasing entries of the signature rows");
+    f.index = open_table(f.file, "index", make_dataset("", type_of<char>(), kEntry));
+    for (std::size_t d = 0; d < kQueryGraphDatasets.size(); ++d) {
+      const Dataset& spec = datasets()[dataset_index(kQueryGraphDatasets[d])];
+      f.graph[d] = open_table(f.file, spec.name, spec);
+      const Table offsets =
+          open_table(f.file, query_offsets_name(spec.part), make_dataset("", type_of<std::int64_t>(), kEntry));
+      if (offsets.rows != static_cast<hsize_t>(c.snapshot.size) + 1)
+        throw H5::DataSetIException("read", std::string(query_offsets_name(spec.part)) + " is not #entries + 1 long");
+      f.offsets[spec.part] = offsets.read_vector<std::int64_t>(0, offsets.rows);
+      check_offsets(f.offsets[spec.part], f.graph[d].rows, query_offsets_name(spec.part));
+    }
+  });
+  return q;
+}
+
+std::vector<double> QueryFile::rows() const {
+  return guarded(impl_->path, "reading",
+                 [&] { return impl_->signature.read_vector<double>(0, impl_->signature.rows); });
+}
+
+const std::vector<std::int64_t>& QueryFile::row_of() const { return impl_->row_of; }
+
+std::vector<char> QueryFile::saved_index() const {
+  return guarded(impl_->path, "reading", [&] { return impl_->index.read_vector<char>(0, impl_->index.rows); });
+}
+
+std::vector<GraphRecord> QueryFile::graphs(const std::vector<std::int64_t>& entries) const {
+  const Impl& f = *impl_;
+  std::vector<std::size_t> packed;  // of each entry, in f.row_of
+  for (const std::int64_t e : entries) {
+    const auto at = std::lower_bound(f.row_of.begin(), f.row_of.end(), e);
+    if (at == f.row_of.end() || *at != e)
+      throw InvalidArgument(f.path.string() + ": entry " + std::to_string(e) + " has no signature row");
+    packed.push_back(static_cast<std::size_t>(at - f.row_of.begin()));
+  }
+  // The entries in file order, each once: a selection's rows come in file order.
+  std::vector<std::size_t> order(entries.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return entries[a] < entries[b]; });
+  order.erase(std::unique(order.begin(), order.end(),
+                          [&](std::size_t a, std::size_t b) { return entries[a] == entries[b]; }),
+              order.end());
+  std::vector<GraphRecord> distinct(order.size());
+  guarded(f.path, "reading graphs", [&] {
+    std::vector<std::pair<hsize_t, hsize_t>> blocks;
+    for (const std::size_t k : order) blocks.emplace_back(packed[k], packed[k] + 1);
+    const Dataset& signature_spec = datasets()[dataset_index("signature")];
+    const std::vector<char> signatures = read_blocks(f.signature, blocks);
+    for (std::size_t r = 0; r < order.size(); ++r) {
+      distinct[r].ok = true;
+      signature_spec.take(distinct[r], signatures.data() + r * f.signature.row_bytes(), f.signature.columns());
+    }
+    for (std::size_t d = 0; d < kQueryGraphDatasets.size(); ++d) {
+      const Dataset& spec = datasets()[dataset_index(kQueryGraphDatasets[d])];
+      const std::vector<std::int64_t>& offset = f.offsets[spec.part];
+      blocks.clear();
+      for (const std::size_t k : order) {
+        const auto e = static_cast<std::size_t>(entries[k]);
+        blocks.emplace_back(static_cast<hsize_t>(offset[e]), static_cast<hsize_t>(offset[e + 1]));
+      }
+      const std::vector<char> data = read_blocks(f.graph[d], blocks);
+      std::size_t at = 0;
+      for (std::size_t r = 0; r < order.size(); ++r) {
+        const std::size_t n = static_cast<std::size_t>(blocks[r].second - blocks[r].first);
+        spec.take(distinct[r], data.data() + at * f.graph[d].row_bytes(), n * f.graph[d].columns());
+        at += n;
+      }
+    }
+  });
+  std::vector<GraphRecord> out;
+  for (const std::int64_t e : entries) {
+    const auto r = std::lower_bound(order.begin(), order.end(), e,
+                                    [&](std::size_t a, std::int64_t key) { return entries[a] < key; });
+    out.push_back(distinct[static_cast<std::size_t>(r - order.begin())]);
+  }
+  return out;
 }
 
 }  // namespace reebkit

@@ -114,6 +114,48 @@ class CollectionReader {
   const Provenance& provenance() const;
 
  private:
+  friend class QueryFile;
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// What query by example needs of a collection, beside it so that a query
+/// reads that and not the whole collection: COLLECTION with the extension
+/// `.query.h5` (docs/collection-file.md, "The query file"). Every dataset is
+/// contiguous and unfiltered: the signature rows and the saved pre-filter
+/// index load in one read each, and a candidate's graph is read by hyperslab
+/// from CSR copies of `nodes`, `node_attr` and `edges`. Written for one state
+/// of the collection (its `count` and `created`); another state ignores it.
+class QueryFile {
+ public:
+  /// Where the query file of `collection` lies.
+  static std::filesystem::path path_of(const std::filesystem::path& collection);
+  /// Writes the query file of `collection` (temp file + rename): the
+  /// signature rows without NaN, packed (`rows`, row-major, kSignatureLength
+  /// columns), their entries (`row_of`, increasing), `saved_index` (opaque
+  /// bytes) and every entry's nodes and edges. Throws Error naming the file.
+  static void write(const CollectionReader& collection, const std::vector<double>& rows,
+                    const std::vector<std::int64_t>& row_of, const std::vector<char>& saved_index);
+  /// The query file of `collection`, its offsets read; nullopt when there is
+  /// none or it was written for another state of the collection. Throws
+  /// Error naming the file when it is there but unreadable.
+  static std::optional<QueryFile> open(const CollectionReader& collection);
+  QueryFile(QueryFile&&) noexcept;
+  QueryFile& operator=(QueryFile&&) noexcept;
+  ~QueryFile();
+
+  /// The packed signature rows, their entries and the saved index, one read
+  /// each (as write() took them).
+  std::vector<double> rows() const;
+  const std::vector<std::int64_t>& row_of() const;
+  std::vector<char> saved_index() const;
+  /// Entries `entries` (each in row_of()) with what graph matching reads
+  /// (ok, signature, nodes, node_attributes, edges; the other members
+  /// empty), one read per dataset; in the order of `entries`.
+  std::vector<GraphRecord> graphs(const std::vector<std::int64_t>& entries) const;
+
+ private:
+  QueryFile();
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
