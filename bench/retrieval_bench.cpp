@@ -153,8 +153,6 @@ void query_figures(const CollectionReader& source, std::int64_t size, const std:
     if (searchable)
       std::printf("  the same on the loaded collection (identical results): %s\n", spread(loaded).c_str());
   }
-  std::filesystem::remove(QueryFile::path_of(scratch));
-  std::filesystem::remove(scratch);
 }
 
 }  // namespace
@@ -167,8 +165,14 @@ int main(int argc, char** argv) {
   try {
     const CollectionReader collection(argv[1]);
     all_pairs_figures(collection);
-    query_figures(collection, argc > 2 ? std::stoll(argv[2]) : 10000,
-                  argc > 3 ? argv[3] : std::filesystem::temp_directory_path() / "retrieval_bench.h5");
+    // A SCRATCH given is kept with its query file (for timing reeb query on it).
+    const std::filesystem::path scratch =
+        argc > 3 ? argv[3] : std::filesystem::temp_directory_path() / "retrieval_bench.h5";
+    query_figures(collection, argc > 2 ? std::stoll(argv[2]) : 10000, scratch);
+    if (argc <= 3) {
+      std::filesystem::remove(QueryFile::path_of(scratch));
+      std::filesystem::remove(scratch);
+    }
   } catch (const std::exception& e) {
     std::cerr << "retrieval_bench: " << e.what() << "\n";
     return 1;

@@ -12,16 +12,18 @@
 
 #include <iomanip>
 #include <iostream>
+#include <optional>
 
 namespace reebkit::cli {
 
 namespace {
 
-/// The query's entry: the collection's own when `query` names one of its
-/// meshes, otherwise the mesh file analysed as reeb index analysed the
-/// collection (largest component, the collection's analysis options).
-GraphRecord query_entry(const CollectionReader& collection, const std::string& query) {
-  if (const auto index = collection.find(query)) return collection.entry(*index);
+/// The query's entry: the collection's own entry `index` when `query` names
+/// one of its meshes, otherwise the mesh file analysed as reeb index analysed
+/// the collection (largest component, the collection's analysis options).
+GraphRecord query_entry(const CollectionReader& collection, const std::string& query,
+                        const std::optional<std::int64_t>& index) {
+  if (index) return collection.entry(*index);
   return analyze_mesh_file(query, query, analysis_options_from(collection.provenance().analysis_options));
 }
 
@@ -77,8 +79,9 @@ int run_query(const std::vector<std::string>& args) {
 
   const CollectionReader collection(path);
   Timer timer;
-  const bool in_collection = collection.find(query).has_value();
-  const GraphRecord entry = query_entry(collection, query);
+  const std::optional<std::int64_t> index = collection.find(query);
+  const bool in_collection = index.has_value();
+  const GraphRecord entry = query_entry(collection, query, index);
   if (!entry.ok) throw Error(path + ": mesh '" + query + "' failed when indexed: " + entry.error);
   const double extract_ms = timer.lap();
   // With a current query file only the signature index and the candidates'

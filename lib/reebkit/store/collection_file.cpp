@@ -762,7 +762,10 @@ void print_hdf5_error_stacks(bool on) { print_error_stacks = on; }
 
 struct CollectionReader::Impl : OpenCollection {
   fs::path path;
-  std::unordered_map<std::string, std::int64_t> by_name;
+  /// The entries by name, built on the second find(): the first scans the
+  /// names (a query by name need not hash every name of a large collection).
+  mutable std::unordered_map<std::string, std::int64_t> by_name;
+  mutable bool found_once = false;
   /// The signature matrix, read on the first signatures() (a query with a
   /// query file never reads it).
   mutable std::optional<std::vector<double>> signatures;
@@ -772,8 +775,6 @@ CollectionReader::CollectionReader(const fs::path& path) : impl_(std::make_uniqu
   H5::Exception::dontPrint();
   impl_->path = path;
   static_cast<OpenCollection&>(*impl_) = open_collection(path);
-  for (std::int64_t i = 0; i < impl_->snapshot.size; ++i)
-    impl_->by_name.emplace(impl_->snapshot.names[static_cast<std::size_t>(i)], i);
 }
 
 CollectionReader::~CollectionReader() = default;
@@ -793,6 +794,15 @@ const std::vector<double>& CollectionReader::signatures() const {
 const Provenance& CollectionReader::provenance() const { return impl_->snapshot.provenance; }
 
 std::optional<std::int64_t> CollectionReader::find(const std::string& name) const {
+  const std::vector<std::string>& names = impl_->snapshot.names;
+  if (!impl_->found_once) {
+    impl_->found_once = true;
+    const auto at = std::find(names.begin(), names.end(), name);
+    if (at == names.end()) return std::nullopt;
+    return at - names.begin();
+  }
+  if (impl_->by_name.empty())
+    for (std::size_t i = 0; i < names.size(); ++i) impl_->by_name.emplace(names[i], static_cast<std::int64_t>(i));
   const auto it = impl_->by_name.find(name);
   if (it == impl_->by_name.end()) return std::nullopt;
   return it->second;
@@ -1216,7 +1226,11 @@ std::optional<QueryFile> QueryFile::open(const CollectionReader& collection) {
   Impl& f = *q.impl_;
   f.path = path;
   const bool current = guarded(path, "opening", [&] {
-    f.file = H5::H5File(path.string(), H5F_ACC_RDONLY);
+    // No sieve buffer: each candidate's rows are read as they are, not with
+    // the 64 KiB around them.
+    H5::FileAccPropList access;
+    H5Pset_sieve_buf_size(access.getId(), 0);
+    f.file = H5::H5File(path.string(), H5F_ACC_RDONLY, H5::FileCreatPropList::DEFAULT, access);
     return layout_version(f.file) == kQueryFileLayout &&
            read_int_attribute(f.file, "collection_count") == c.snapshot.size &&
            read_string_attribute(f.file, "collection_created") == c.snapshot.provenance.created;
