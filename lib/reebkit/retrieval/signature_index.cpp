@@ -20,11 +20,15 @@ using KdTree = flann::KDTreeSingleIndex<flann::L2<double>>;
 
 struct SignatureIndex::Impl {
   int dimension = 0;
-  std::vector<double> rows;           ///< the indexed signatures, packed
-  std::vector<std::int64_t> row_of;   ///< packed row -> row of the input matrix
+  std::vector<double> packed;          ///< the indexed signatures, when built here
+  std::shared_ptr<const double> rows;  ///< the indexed signatures, packed (`packed` or given)
+  std::vector<std::int64_t> row_of;    ///< packed row -> row of the input matrix
   std::unique_ptr<FlannIndex> index;
 
-  flann::Matrix<double> data() { return {rows.data(), row_of.size(), static_cast<std::size_t>(dimension)}; }
+  /// The rows as FLANN takes them (which only reads them: the k-d tree does not reorder them).
+  flann::Matrix<double> data() {
+    return {const_cast<double*>(rows.get()), row_of.size(), static_cast<std::size_t>(dimension)};
+  }
 };
 
 SignatureIndex::SignatureIndex(const std::vector<double>& signatures, int dimension,
@@ -39,9 +43,10 @@ SignatureIndex::SignatureIndex(const std::vector<double>& signatures, int dimens
   for (std::size_t r = 0; r < signatures.size() / d; ++r) {
     const auto begin = signatures.begin() + static_cast<std::ptrdiff_t>(r * d);
     if (std::any_of(begin, begin + dimension, [](double v) { return std::isnan(v); })) continue;
-    impl_->rows.insert(impl_->rows.end(), begin, begin + dimension);
+    impl_->packed.insert(impl_->packed.end(), begin, begin + dimension);
     impl_->row_of.push_back(static_cast<std::int64_t>(r));
   }
+  impl_->rows = std::shared_ptr<const double>(impl_->packed.data(), [](const double*) {});  // owned by packed
   if (impl_->row_of.empty()) return;
   if (options.kind == SignatureIndexKind::Linear)
     impl_->index = std::make_unique<flann::LinearIndex<flann::L2<double>>>(impl_->data(), flann::LinearIndexParams());
@@ -51,12 +56,10 @@ SignatureIndex::SignatureIndex(const std::vector<double>& signatures, int dimens
   impl_->index->buildIndex();
 }
 
-SignatureIndex::SignatureIndex(std::vector<double> rows, std::vector<std::int64_t> row_of, int dimension,
+SignatureIndex::SignatureIndex(std::shared_ptr<const double> rows, std::vector<std::int64_t> row_of, int dimension,
                                const std::vector<char>& saved)
     : impl_(std::make_unique<Impl>()) {
-  if (dimension < 1 || rows.size() != row_of.size() * static_cast<std::size_t>(dimension))
-    throw InvalidArgument("signature index: " + std::to_string(rows.size()) + " values are not " +
-                          std::to_string(row_of.size()) + " rows of " + std::to_string(dimension));
+  if (dimension < 1) throw InvalidArgument("signature index: dimension " + std::to_string(dimension) + " < 1");
   impl_->dimension = dimension;
   impl_->rows = std::move(rows);
   impl_->row_of = std::move(row_of);
@@ -84,7 +87,7 @@ SignatureIndex& SignatureIndex::operator=(SignatureIndex&&) noexcept = default;
 
 std::int64_t SignatureIndex::size() const { return static_cast<std::int64_t>(impl_->row_of.size()); }
 int SignatureIndex::dimension() const { return impl_->dimension; }
-const std::vector<double>& SignatureIndex::rows() const { return impl_->rows; }
+const double* SignatureIndex::rows() const { return impl_->rows.get(); }
 const std::vector<std::int64_t>& SignatureIndex::row_of() const { return impl_->row_of; }
 
 std::vector<char> SignatureIndex::save() const {
@@ -111,18 +114,23 @@ std::vector<SignatureNeighbour> SignatureIndex::nearest(const std::vector<double
   const std::size_t k = static_cast<std::size_t>(std::clamp<std::int64_t>(count, 0, size()));
   if (k == 0) return {};
 
-  // The k nearest, then every row as near as the k-th, so that rows tied at
-  // the k-th distance are chosen by increasing row whatever FLANN's order.
-  // FLANN's L2 distances are squared.
+  // Every row as near as the k-th, so that rows tied at the k-th distance
+  // are chosen by increasing row whatever FLANN's order: the k + kTieMargin
+  // nearest hold them all unless the last of those is tied too, and then a
+  // radius search finds them. FLANN's L2 distances are squared.
+  constexpr std::size_t kTieMargin = 8;
   const flann::Matrix<double> q(const_cast<double*>(query.data()), 1, query.size());
   std::vector<std::vector<std::size_t>> indices;
   std::vector<std::vector<double>> squared;
   const flann::SearchParams exact(flann::FLANN_CHECKS_UNLIMITED, 0.0f, true);
-  impl_->index->knnSearch(q, indices, squared, k, exact);
-  const double kth = squared.front().back();
-  float radius = static_cast<float>(kth);  // FLANN takes a float radius: the first float above kth
-  while (static_cast<double>(radius) <= kth) radius = std::nextafter(radius, std::numeric_limits<float>::infinity());
-  impl_->index->radiusSearch(q, indices, squared, radius, exact);
+  const std::size_t wider = std::min(k + kTieMargin, static_cast<std::size_t>(size()));
+  impl_->index->knnSearch(q, indices, squared, wider, exact);
+  const double kth = squared.front()[k - 1];
+  if (wider < static_cast<std::size_t>(size()) && squared.front().back() <= kth) {
+    float radius = static_cast<float>(kth);  // FLANN takes a float radius: the first float above kth
+    while (static_cast<double>(radius) <= kth) radius = std::nextafter(radius, std::numeric_limits<float>::infinity());
+    impl_->index->radiusSearch(q, indices, squared, radius, exact);
+  }
 
   std::vector<SignatureNeighbour> out;
   for (std::size_t i = 0; i < indices.front().size(); ++i)

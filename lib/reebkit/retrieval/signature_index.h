@@ -38,11 +38,12 @@ class SignatureIndex {
   /// `signatures`: rows x `dimension`, row-major. Throws InvalidArgument when
   /// the size is not a multiple of `dimension` or `dimension` < 1.
   SignatureIndex(const std::vector<double>& signatures, int dimension, const SignatureIndexOptions& options = {});
-  /// The k-d tree that save() wrote for `rows` (the rows without NaN of a
-  /// signature matrix, packed, rows.size() / dimension of them) and
-  /// `row_of` (their rows in that matrix), without building it anew. Throws
-  /// InvalidArgument when the sizes disagree or `saved` is not such a tree.
-  SignatureIndex(std::vector<double> rows, std::vector<std::int64_t> row_of, int dimension,
+  /// The k-d tree that save() wrote, over `rows`: row_of.size() x
+  /// `dimension` values, the rows without NaN of a signature matrix, packed
+  /// (e.g. mapped from a query file: store/collection_file.h), kept alive by
+  /// the index; `row_of` their rows in that matrix. Not built anew. Throws
+  /// InvalidArgument when `saved` is not such a tree of as many rows.
+  SignatureIndex(std::shared_ptr<const double> rows, std::vector<std::int64_t> row_of, int dimension,
                  const std::vector<char>& saved);
   ~SignatureIndex();
   SignatureIndex(SignatureIndex&&) noexcept;
@@ -53,7 +54,7 @@ class SignatureIndex {
   int dimension() const;
   /// The indexed rows (packed, size() x dimension()) and their rows in the
   /// signature matrix, as the loading constructor takes them.
-  const std::vector<double>& rows() const;
+  const double* rows() const;
   const std::vector<std::int64_t>& row_of() const;
   /// The k-d tree as bytes (FLANN's serialization), for the loading
   /// constructor. Throws InvalidArgument for a linear index.

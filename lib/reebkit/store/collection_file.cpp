@@ -25,6 +25,8 @@
 
 #include <H5Cpp.h>
 #include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -1165,16 +1167,13 @@ fs::path QueryFile::path_of(const fs::path& collection) {
   return path.replace_extension(".query.h5");
 }
 
-void QueryFile::write(const CollectionReader& collection, const std::vector<double>& rows,
-                      const std::vector<std::int64_t>& row_of, const std::vector<char>& saved_index) {
+void QueryFile::write(const CollectionReader& collection, const double* rows, const std::vector<std::int64_t>& row_of,
+                      const std::vector<char>& saved_index) {
   const CollectionReader::Impl& c = *collection.impl_;
   const fs::path path = path_of(c.path);
   fs::path temporary = path;
   temporary += ".partial";
   const Dataset& signature_spec = datasets()[dataset_index("signature")];
-  if (rows.size() != row_of.size() * signature_spec.columns.size())
-    throw InvalidArgument(path.string() + ": " + std::to_string(rows.size()) + " signature values are not " +
-                          std::to_string(row_of.size()) + " rows");
   guarded(temporary, "writing", [&] {
     H5::H5File file(temporary.string(), H5F_ACC_TRUNC);
     const int layout = kQueryFileLayout;
@@ -1182,7 +1181,7 @@ void QueryFile::write(const CollectionReader& collection, const std::vector<doub
         .write(H5::PredType::NATIVE_INT, &layout);
     write_int_attribute(file, "collection_count", c.snapshot.size);
     write_string_attribute(file, "collection_created", c.snapshot.provenance.created);
-    write_rows(create_contiguous(file, "signature", signature_spec, row_of.size()), rows.data(), 0, row_of.size());
+    write_rows(create_contiguous(file, "signature", signature_spec, row_of.size()), rows, 0, row_of.size());
     const Dataset rows_spec = make_dataset("signature_row", type_of<std::int64_t>(), kEntry);
     write_rows(create_contiguous(file, "signature_row", rows_spec, row_of.size()), row_of.data(), 0, row_of.size());
     const Dataset bytes_spec = make_dataset("index", type_of<char>(), kEntry);
@@ -1259,9 +1258,30 @@ std::optional<QueryFile> QueryFile::open(const CollectionReader& collection) {
   return q;
 }
 
-std::vector<double> QueryFile::rows() const {
-  return guarded(impl_->path, "reading",
-                 [&] { return impl_->signature.read_vector<double>(0, impl_->signature.rows); });
+std::shared_ptr<const double> QueryFile::rows() const {
+  const Impl& f = *impl_;
+  const std::size_t bytes = static_cast<std::size_t>(f.signature.rows) * f.signature.row_bytes();
+  if (bytes == 0) return nullptr;
+  const haddr_t address = H5Dget_offset(f.signature.dataset.getId());
+  if (address == HADDR_UNDEF || !(f.signature.dataset.getDataType() == H5::PredType::NATIVE_DOUBLE))
+    fail(f.path, "the signature rows are not contiguous native doubles");
+  const int fd = ::open(f.path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) fail(f.path, std::string("cannot open: ") + std::strerror(errno));
+  struct stat status {};
+  const auto page = static_cast<haddr_t>(::sysconf(_SC_PAGESIZE));
+  const haddr_t start = address / page * page;
+  const std::size_t length = bytes + static_cast<std::size_t>(address - start);
+  if (::fstat(fd, &status) != 0 || static_cast<haddr_t>(status.st_size) < address + bytes) {  // else SIGBUS
+    ::close(fd);
+    fail(f.path, "shorter than its signature rows (truncated?)");
+  }
+  void* map = ::mmap(nullptr, length, PROT_READ, MAP_SHARED, fd, static_cast<off_t>(start));
+  const int error = errno;
+  ::close(fd);
+  if (map == MAP_FAILED) fail(f.path, std::string("cannot map the signature rows: ") + std::strerror(error));
+  const std::shared_ptr<const char> mapping(static_cast<const char*>(map),
+                                            [length](const char* p) { ::munmap(const_cast<char*>(p), length); });
+  return {mapping, reinterpret_cast<const double*>(mapping.get() + (address - start))};
 }
 
 const std::vector<std::int64_t>& QueryFile::row_of() const { return impl_->row_of; }

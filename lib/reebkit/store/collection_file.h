@@ -122,8 +122,8 @@ class CollectionReader {
 /// What query by example needs of a collection, beside it so that a query
 /// reads that and not the whole collection: COLLECTION with the extension
 /// `.query.h5` (docs/collection-file.md, "The query file"). Every dataset is
-/// contiguous and unfiltered: the signature rows and the saved pre-filter
-/// index load in one read each, and a candidate's graph is read by hyperslab
+/// contiguous and unfiltered: the signature rows are mapped, the saved
+/// pre-filter index loads in one read, and a candidate's graph is read by hyperslab
 /// from CSR copies of `nodes`, `node_attr` and `edges`. Written for one state
 /// of the collection (its `count` and `created`); another state ignores it.
 class QueryFile {
@@ -134,8 +134,8 @@ class QueryFile {
   /// signature rows without NaN, packed (`rows`, row-major, kSignatureLength
   /// columns), their entries (`row_of`, increasing), `saved_index` (opaque
   /// bytes) and every entry's nodes and edges. Throws Error naming the file.
-  static void write(const CollectionReader& collection, const std::vector<double>& rows,
-                    const std::vector<std::int64_t>& row_of, const std::vector<char>& saved_index);
+  static void write(const CollectionReader& collection, const double* rows, const std::vector<std::int64_t>& row_of,
+                    const std::vector<char>& saved_index);
   /// The query file of `collection`, its offsets read; nullopt when there is
   /// none or it was written for another state of the collection. Throws
   /// Error naming the file when it is there but unreadable.
@@ -144,9 +144,12 @@ class QueryFile {
   QueryFile& operator=(QueryFile&&) noexcept;
   ~QueryFile();
 
-  /// The packed signature rows, their entries and the saved index, one read
-  /// each (as write() took them).
-  std::vector<double> rows() const;
+  /// The packed signature rows (row_of().size() x kSignatureLength), mapped
+  /// read-only from the file (mmap: the pages a search touches are read, and
+  /// the system's page cache is shared by the processes that query the
+  /// collection); the mapping lasts while a copy of the pointer does.
+  std::shared_ptr<const double> rows() const;
+  /// The rows' entries and the saved index, one read each (as write() took them).
   const std::vector<std::int64_t>& row_of() const;
   std::vector<char> saved_index() const;
   /// Entries `entries` (each in row_of()) with what graph matching reads
