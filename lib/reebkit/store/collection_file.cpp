@@ -39,7 +39,6 @@
 #include <functional>
 #include <limits>
 #include <new>
-#include <numeric>
 #include <optional>
 #include <stdexcept>
 #include <thread>
@@ -659,6 +658,7 @@ std::vector<std::string> read_strings(const Tables& t, const Snapshot& s, const 
   const std::vector<std::int64_t>& ends = s.offsets[datasets()[d].part];
   const auto text = t.table[d].read_vector<char>(0, static_cast<hsize_t>(ends.back()));
   std::vector<std::string> out;
+  out.reserve(ends.size() - 1);
   for (std::size_t k = 0; k + 1 < ends.size(); ++k) out.emplace_back(text.data() + ends[k], text.data() + ends[k + 1]);
   return out;
 }
@@ -1116,25 +1116,6 @@ void write_rows(const Table& t, const void* data, hsize_t first, hsize_t n) {
   t.dataset.write(data, t.type, memory_space, file_space);
 }
 
-/// Rows [first, end) of each of `blocks` (increasing, disjoint), concatenated, in one read.
-std::vector<char> read_blocks(const Table& t, const std::vector<std::pair<hsize_t, hsize_t>>& blocks) {
-  H5::DataSpace file_space = t.dataset.getSpace();
-  file_space.selectNone();
-  hsize_t total = 0;
-  for (const auto& [first, end] : blocks) {
-    if (end <= first) continue;
-    const hsize_t start[2] = {first, 0};
-    const hsize_t count[2] = {end - first, t.width};
-    file_space.selectHyperslab(H5S_SELECT_OR, count, start);
-    total += end - first;
-  }
-  std::vector<char> out(static_cast<std::size_t>(total) * t.row_bytes());
-  if (total == 0) return out;
-  const hsize_t shape[2] = {total, t.width};
-  t.dataset.read(out.data(), t.type, H5::DataSpace(t.rank(), shape), file_space);
-  return out;
-}
-
 std::int64_t read_int_attribute(const H5::H5Object& object, const char* name) {
   std::int64_t value = -1;
   if (object.attrExists(name)) object.openAttribute(name).read(H5::PredType::NATIVE_INT64, &value);
@@ -1146,6 +1127,34 @@ void write_int_attribute(H5::H5Object& object, const char* name, std::int64_t va
       .write(H5::PredType::NATIVE_INT64, &value);
 }
 
+/// The rows of the contiguous dataset `t` of the file `path`, of the native
+/// type `type`, mapped read-only (nullptr when it has none); the mapping
+/// lasts while a copy of the pointer does.
+std::shared_ptr<const char> map_rows(const fs::path& path, const Table& t, const H5::PredType& type) {
+  const std::size_t bytes = static_cast<std::size_t>(t.rows) * t.row_bytes();
+  if (bytes == 0) return nullptr;
+  const haddr_t address = H5Dget_offset(t.dataset.getId());
+  if (address == HADDR_UNDEF || !(t.dataset.getDataType() == type))
+    fail(path, t.dataset.getObjName() + " is not contiguous or not of the native type");
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) fail(path, std::string("cannot open: ") + std::strerror(errno));
+  struct stat status {};
+  const auto page = static_cast<haddr_t>(::sysconf(_SC_PAGESIZE));
+  const haddr_t start = address / page * page;
+  const std::size_t length = bytes + static_cast<std::size_t>(address - start);
+  if (::fstat(fd, &status) != 0 || static_cast<haddr_t>(status.st_size) < address + bytes) {  // else SIGBUS
+    ::close(fd);
+    fail(path, "shorter than its dataset " + t.dataset.getObjName() + " (truncated?)");
+  }
+  void* map = ::mmap(nullptr, length, PROT_READ, MAP_SHARED, fd, static_cast<off_t>(start));
+  const int error = errno;
+  ::close(fd);
+  if (map == MAP_FAILED) fail(path, "cannot map " + t.dataset.getObjName() + ": " + std::strerror(error));
+  const std::shared_ptr<const char> mapping(static_cast<const char*>(map),
+                                            [length](const char* p) { ::munmap(const_cast<char*>(p), length); });
+  return {mapping, mapping.get() + (address - start)};
+}
+
 }  // namespace
 
 struct QueryFile::Impl {
@@ -1155,6 +1164,9 @@ struct QueryFile::Impl {
   std::array<std::vector<std::int64_t>, kPartCount> offsets;  ///< kNode and kEdge: #entries + 1
   Table signature, index;
   std::array<Table, kQueryGraphDatasets.size()> graph;
+  /// The rows of `signature` and `graph`, mapped (map_rows).
+  std::shared_ptr<const char> signature_rows;
+  std::array<std::shared_ptr<const char>, kQueryGraphDatasets.size()> graph_rows;
 };
 
 QueryFile::QueryFile() : impl_(std::make_unique<Impl>()) {}
@@ -1225,11 +1237,7 @@ std::optional<QueryFile> QueryFile::open(const CollectionReader& collection) {
   Impl& f = *q.impl_;
   f.path = path;
   const bool current = guarded(path, "opening", [&] {
-    // No sieve buffer: each candidate's rows are read as they are, not with
-    // the 64 KiB around them.
-    H5::FileAccPropList access;
-    H5Pset_sieve_buf_size(access.getId(), 0);
-    f.file = H5::H5File(path.string(), H5F_ACC_RDONLY, H5::FileCreatPropList::DEFAULT, access);
+    f.file = H5::H5File(path.string(), H5F_ACC_RDONLY);
     return layout_version(f.file) == kQueryFileLayout &&
            read_int_attribute(f.file, "collection_count") == c.snapshot.size &&
            read_string_attribute(f.file, "collection_created") == c.snapshot.provenance.created;
@@ -1255,33 +1263,14 @@ std::optional<QueryFile> QueryFile::open(const CollectionReader& collection) {
       check_offsets(f.offsets[spec.part], f.graph[d].rows, query_offsets_name(spec.part));
     }
   });
+  f.signature_rows = map_rows(path, f.signature, *datasets()[dataset_index("signature")].type);
+  for (std::size_t d = 0; d < kQueryGraphDatasets.size(); ++d)
+    f.graph_rows[d] = map_rows(path, f.graph[d], *datasets()[dataset_index(kQueryGraphDatasets[d])].type);
   return q;
 }
 
 std::shared_ptr<const double> QueryFile::rows() const {
-  const Impl& f = *impl_;
-  const std::size_t bytes = static_cast<std::size_t>(f.signature.rows) * f.signature.row_bytes();
-  if (bytes == 0) return nullptr;
-  const haddr_t address = H5Dget_offset(f.signature.dataset.getId());
-  if (address == HADDR_UNDEF || !(f.signature.dataset.getDataType() == H5::PredType::NATIVE_DOUBLE))
-    fail(f.path, "the signature rows are not contiguous native doubles");
-  const int fd = ::open(f.path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) fail(f.path, std::string("cannot open: ") + std::strerror(errno));
-  struct stat status {};
-  const auto page = static_cast<haddr_t>(::sysconf(_SC_PAGESIZE));
-  const haddr_t start = address / page * page;
-  const std::size_t length = bytes + static_cast<std::size_t>(address - start);
-  if (::fstat(fd, &status) != 0 || static_cast<haddr_t>(status.st_size) < address + bytes) {  // else SIGBUS
-    ::close(fd);
-    fail(f.path, "shorter than its signature rows (truncated?)");
-  }
-  void* map = ::mmap(nullptr, length, PROT_READ, MAP_SHARED, fd, static_cast<off_t>(start));
-  const int error = errno;
-  ::close(fd);
-  if (map == MAP_FAILED) fail(f.path, std::string("cannot map the signature rows: ") + std::strerror(error));
-  const std::shared_ptr<const char> mapping(static_cast<const char*>(map),
-                                            [length](const char* p) { ::munmap(const_cast<char*>(p), length); });
-  return {mapping, reinterpret_cast<const double*>(mapping.get() + (address - start))};
+  return {impl_->signature_rows, reinterpret_cast<const double*>(impl_->signature_rows.get())};
 }
 
 const std::vector<std::int64_t>& QueryFile::row_of() const { return impl_->row_of; }
@@ -1292,52 +1281,23 @@ std::vector<char> QueryFile::saved_index() const {
 
 std::vector<GraphRecord> QueryFile::graphs(const std::vector<std::int64_t>& entries) const {
   const Impl& f = *impl_;
-  std::vector<std::size_t> packed;  // of each entry, in f.row_of
-  for (const std::int64_t e : entries) {
-    const auto at = std::lower_bound(f.row_of.begin(), f.row_of.end(), e);
-    if (at == f.row_of.end() || *at != e)
-      throw InvalidArgument(f.path.string() + ": entry " + std::to_string(e) + " has no signature row");
-    packed.push_back(static_cast<std::size_t>(at - f.row_of.begin()));
-  }
-  // The entries in file order, each once: a selection's rows come in file order.
-  std::vector<std::size_t> order(entries.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return entries[a] < entries[b]; });
-  order.erase(std::unique(order.begin(), order.end(),
-                          [&](std::size_t a, std::size_t b) { return entries[a] == entries[b]; }),
-              order.end());
-  std::vector<GraphRecord> distinct(order.size());
-  guarded(f.path, "reading graphs", [&] {
-    std::vector<std::pair<hsize_t, hsize_t>> blocks;
-    for (const std::size_t k : order) blocks.emplace_back(packed[k], packed[k] + 1);
-    const Dataset& signature_spec = datasets()[dataset_index("signature")];
-    const std::vector<char> signatures = read_blocks(f.signature, blocks);
-    for (std::size_t r = 0; r < order.size(); ++r) {
-      distinct[r].ok = true;
-      signature_spec.take(distinct[r], signatures.data() + r * f.signature.row_bytes(), f.signature.columns());
-    }
+  const Dataset& signature_spec = datasets()[dataset_index("signature")];
+  std::vector<GraphRecord> out(entries.size());
+  for (std::size_t k = 0; k < entries.size(); ++k) {
+    const auto at = std::lower_bound(f.row_of.begin(), f.row_of.end(), entries[k]);
+    if (at == f.row_of.end() || *at != entries[k])
+      throw InvalidArgument(f.path.string() + ": entry " + std::to_string(entries[k]) + " has no signature row");
+    GraphRecord& g = out[k];
+    g.ok = true;
+    const auto packed = static_cast<std::size_t>(at - f.row_of.begin());
+    signature_spec.take(g, f.signature_rows.get() + packed * f.signature.row_bytes(), f.signature.columns());
     for (std::size_t d = 0; d < kQueryGraphDatasets.size(); ++d) {
       const Dataset& spec = datasets()[dataset_index(kQueryGraphDatasets[d])];
-      const std::vector<std::int64_t>& offset = f.offsets[spec.part];
-      blocks.clear();
-      for (const std::size_t k : order) {
-        const auto e = static_cast<std::size_t>(entries[k]);
-        blocks.emplace_back(static_cast<hsize_t>(offset[e]), static_cast<hsize_t>(offset[e + 1]));
-      }
-      const std::vector<char> data = read_blocks(f.graph[d], blocks);
-      std::size_t at = 0;
-      for (std::size_t r = 0; r < order.size(); ++r) {
-        const std::size_t n = static_cast<std::size_t>(blocks[r].second - blocks[r].first);
-        spec.take(distinct[r], data.data() + at * f.graph[d].row_bytes(), n * f.graph[d].columns());
-        at += n;
-      }
+      const auto e = static_cast<std::size_t>(entries[k]);
+      const auto first = static_cast<std::size_t>(f.offsets[spec.part][e]);
+      const auto n = static_cast<std::size_t>(f.offsets[spec.part][e + 1]) - first;
+      spec.take(g, f.graph_rows[d].get() + first * f.graph[d].row_bytes(), n * f.graph[d].columns());
     }
-  });
-  std::vector<GraphRecord> out;
-  for (const std::int64_t e : entries) {
-    const auto r = std::lower_bound(order.begin(), order.end(), e,
-                                    [&](std::size_t a, std::int64_t key) { return entries[a] < key; });
-    out.push_back(distinct[static_cast<std::size_t>(r - order.begin())]);
   }
   return out;
 }

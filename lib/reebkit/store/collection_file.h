@@ -122,10 +122,13 @@ class CollectionReader {
 /// What query by example needs of a collection, beside it so that a query
 /// reads that and not the whole collection: COLLECTION with the extension
 /// `.query.h5` (docs/collection-file.md, "The query file"). Every dataset is
-/// contiguous and unfiltered: the signature rows are mapped, the saved
-/// pre-filter index loads in one read, and a candidate's graph is read by hyperslab
-/// from CSR copies of `nodes`, `node_attr` and `edges`. Written for one state
-/// of the collection (its `count` and `created`); another state ignores it.
+/// contiguous and unfiltered: the saved pre-filter index loads in one read,
+/// and the signature rows and CSR copies of `nodes`, `node_attr` and `edges`
+/// are mapped read-only (mmap: the pages a query touches are read, and the
+/// system's page cache is shared by the processes that query the
+/// collection), so that a candidate's graph is read when it is one. Written
+/// for one state of the collection (its `count` and `created`); another
+/// state ignores it.
 class QueryFile {
  public:
   /// Where the query file of `collection` lies.
@@ -144,17 +147,15 @@ class QueryFile {
   QueryFile& operator=(QueryFile&&) noexcept;
   ~QueryFile();
 
-  /// The packed signature rows (row_of().size() x kSignatureLength), mapped
-  /// read-only from the file (mmap: the pages a search touches are read, and
-  /// the system's page cache is shared by the processes that query the
-  /// collection); the mapping lasts while a copy of the pointer does.
+  /// The packed signature rows (row_of().size() x kSignatureLength), mapped;
+  /// the mapping lasts while a copy of the pointer does.
   std::shared_ptr<const double> rows() const;
   /// The rows' entries and the saved index, one read each (as write() took them).
   const std::vector<std::int64_t>& row_of() const;
   std::vector<char> saved_index() const;
   /// Entries `entries` (each in row_of()) with what graph matching reads
   /// (ok, signature, nodes, node_attributes, edges; the other members
-  /// empty), one read per dataset; in the order of `entries`.
+  /// empty), copied from the mapped rows; in the order of `entries`.
   std::vector<GraphRecord> graphs(const std::vector<std::int64_t>& entries) const;
 
  private:
