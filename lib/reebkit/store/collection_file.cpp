@@ -143,6 +143,24 @@ auto guarded(const fs::path& path, const char* doing, Body&& body) {
   }
 }
 
+/// Runs `write`, which writes `temporary`, then puts `temporary` in place of
+/// `path`; when `write` throws, runs `on_failure`, removes `temporary` and
+/// rethrows (the file at `path` stays as it was).
+template <typename Write, typename OnFailure>
+void replace_file(const fs::path& path, const fs::path& temporary, Write&& write, OnFailure&& on_failure) {
+  try {
+    write();
+  } catch (...) {
+    on_failure();
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    throw;
+  }
+  std::error_code error;
+  fs::rename(temporary, path, error);
+  if (error) fail(path, "cannot replace it with " + temporary.string() + ": " + error.message());
+}
+
 /// One extendible dataset of `width` columns (width 0: one-dimensional).
 struct Table {
   H5::DataSet dataset;
@@ -995,28 +1013,23 @@ CollectionWriter::CollectionWriter(const fs::path& path, const Provenance& prove
   // Resume: copy the committed entries into a fresh file, then put it in place.
   fs::path temporary = path;
   temporary += ".resume-tmp";
-  try {
-    const OpenCollection old = open_collection(path);
-    w.write_step(temporary, "creating", [&] { w.create(temporary, provenance); });
-    const std::int64_t n = old.snapshot.size;
-    for (std::int64_t first = 0; first < n; first += static_cast<std::int64_t>(kBatchEntries)) {
-      const std::int64_t count = std::min<std::int64_t>(static_cast<std::int64_t>(kBatchEntries), n - first);
-      auto entries = guarded(path, "reading", [&] { return read_entries(old.tables, old.snapshot, first, count); });
-      for (GraphRecord& e : entries) {
-        w.existing.emplace_back(e.name, e.content_hash);
-        append(std::move(e));
-      }
-    }
-    w.write_step(temporary, "writing", [&] { w.commit(); });
-  } catch (...) {
-    w.abandon();
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    throw;
-  }
-  std::error_code error;
-  fs::rename(temporary, path, error);
-  if (error) fail(path, "cannot replace it with " + temporary.string() + ": " + error.message());
+  replace_file(
+      path, temporary,
+      [&] {
+        const OpenCollection old = open_collection(path);
+        w.write_step(temporary, "creating", [&] { w.create(temporary, provenance); });
+        const std::int64_t n = old.snapshot.size;
+        for (std::int64_t first = 0; first < n; first += static_cast<std::int64_t>(kBatchEntries)) {
+          const std::int64_t count = std::min<std::int64_t>(static_cast<std::int64_t>(kBatchEntries), n - first);
+          auto entries = guarded(path, "reading", [&] { return read_entries(old.tables, old.snapshot, first, count); });
+          for (GraphRecord& e : entries) {
+            w.existing.emplace_back(e.name, e.content_hash);
+            append(std::move(e));
+          }
+        }
+        w.write_step(temporary, "writing", [&] { w.commit(); });
+      },
+      [&] { w.abandon(); });
 }
 
 CollectionWriter::~CollectionWriter() {
@@ -1175,7 +1188,8 @@ QueryFile& QueryFile::operator=(QueryFile&&) noexcept = default;
 QueryFile::~QueryFile() = default;
 
 fs::path QueryFile::path_of(const fs::path& collection) {
-  fs::path path = collection;
+  // Beside the file a link to the collection names, whichever name is used.
+  fs::path path = fs::is_symlink(collection) ? fs::weakly_canonical(collection) : collection;
   return path.replace_extension(".query.h5");
 }
 
@@ -1186,7 +1200,7 @@ void QueryFile::write(const CollectionReader& collection, const double* rows, co
   fs::path temporary = path;
   temporary += ".partial";
   const Dataset& signature_spec = datasets()[dataset_index("signature")];
-  guarded(temporary, "writing", [&] {
+  const auto write_file = [&] {
     H5::H5File file(temporary.string(), H5F_ACC_TRUNC);
     const int layout = kQueryFileLayout;
     file.createAttribute("layout", H5::PredType::NATIVE_INT, H5::DataSpace(H5S_SCALAR))
@@ -1222,10 +1236,9 @@ void QueryFile::write(const CollectionReader& collection, const double* rows, co
       }
     }
     file.close();
-  });
-  std::error_code error;
-  fs::rename(temporary, path, error);
-  if (error) fail(path, "cannot replace it with " + temporary.string() + ": " + error.message());
+  };
+  replace_file(
+      path, temporary, [&] { guarded(temporary, "writing", write_file); }, [] {});
 }
 
 std::optional<QueryFile> QueryFile::open(const CollectionReader& collection) {
