@@ -64,8 +64,8 @@ std::vector<QueryResult> query_collection(const SearchableCollection& collection
                                           const QueryOptions& options = {});
 
 /// A collection queried without reading it whole: the signature index of its
-/// query file (store/collection_file.h, QueryFile), loaded in one read per
-/// dataset, and each candidate's graph read from that file when it is one.
+/// query file (store/collection_file.h, QueryFile), the saved tree loaded and
+/// the rows mapped, and each candidate's graph read from that file when it is one.
 struct QueryableFile {
   QueryFile file;
   SignatureIndex index;

@@ -6,7 +6,8 @@
 // an exact, deterministic index: a linear scan or a single k-d tree searched
 // without approximation. The k-d tree keeps the rows in their order (FLANN's
 // `reorder` off), so that its saved form (save()) is the tree alone and
-// loads beside the rows in one read each (store/collection_file.h, QueryFile).
+// loads over rows kept elsewhere (mapped from a query file:
+// store/collection_file.h, QueryFile).
 #pragma once
 
 #include <cstdint>
