@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 namespace reebkit::python {
 
@@ -24,7 +25,18 @@ struct Collection {
   std::string path;
   CollectionReader reader;
   AnalysisOptions analysis;  ///< those the collection was indexed with
-  std::unique_ptr<const SearchableCollection> searchable;  ///< read on the first query
+  /// Read on the first query: the query file's signature index when there is
+  /// one for the collection as it is, otherwise the whole collection.
+  std::optional<QueryableFile> file;
+  std::unique_ptr<const SearchableCollection> searchable;
+
+  std::vector<QueryResult> query(const GraphRecord& record, const QueryOptions& options) {
+    if (!file && !searchable) {
+      file = open_query_file(reader);
+      if (!file) searchable = std::make_unique<const SearchableCollection>(load_searchable(reader));
+    }
+    return file ? query_collection(reader, *file, record, options) : query_collection(*searchable, record, options);
+  }
 };
 
 std::int64_t entry_index(const Collection& c, std::int64_t i) {
@@ -104,12 +116,15 @@ void bind_collection(py::module_& m) {
              const py::gil_scoped_release release;
              CollectionReader reader(path);
              const AnalysisOptions analysis = analysis_options_from(reader.provenance().analysis_options);
-             return std::make_unique<Collection>(Collection{path.string(), std::move(reader), analysis, nullptr});
+             return std::make_unique<Collection>(
+                 Collection{path.string(), std::move(reader), analysis, std::nullopt, nullptr});
            }),
            py::arg("path"))
       .def("__len__", [](const Collection& c) { return c.reader.size(); })
       .def("__getitem__",
-           [](const Collection& c, std::int64_t i) { return ArrayGraph{c.reader.entry(entry_index(c, i)), {}, {}, c.analysis}; })
+           [](const Collection& c, std::int64_t i) {
+             return ArrayGraph{c.reader.entry(entry_index(c, i)), {}, {}, c.analysis};
+           })
       .def("__getitem__",
            [](const Collection& c, const std::string& name) {
              return ArrayGraph{c.reader.entry(entry_index(c, name)), {}, {}, c.analysis};
@@ -129,10 +144,11 @@ void bind_collection(py::module_& m) {
           },
           "every entry as a ReebGraph, in collection order (one read per dataset)")
       .def_property_readonly("path", [](const Collection& c) { return c.path; })
-      .def_property_readonly("names", [](const Collection& c) { return c.reader.names(); },
-                             "the meshes' names, in collection order")
-      .def_property_readonly("classes", [](const Collection& c) { return c.reader.class_labels(); },
-                             "the meshes' class labels ('' when none), in collection order")
+      .def_property_readonly(
+          "names", [](const Collection& c) { return c.reader.names(); }, "the meshes' names, in collection order")
+      .def_property_readonly(
+          "classes", [](const Collection& c) { return c.reader.class_labels(); },
+          "the meshes' class labels ('' when none), in collection order")
       .def_property_readonly(
           "signatures",
           [](py::object self) {
@@ -140,10 +156,11 @@ void bind_collection(py::module_& m) {
             return view_array(s.data(), {static_cast<py::ssize_t>(s.size() / kSignatureLength), kSignatureLength},
                               {kSignatureLength * sizeof(double), sizeof(double)}, self);
           },
-          ("(N, " + std::to_string(kSignatureLength) + ") float64: every entry's signature (NaN rows for failed entries)").c_str())
+          ("(N, " + std::to_string(kSignatureLength) +
+           ") float64: every entry's signature (NaN rows for failed entries)")
+              .c_str())
       .def_property_readonly(
-          "analysis_options",
-          [](const Collection& c) { return options_dict(c.analysis); },
+          "analysis_options", [](const Collection& c) { return options_dict(c.analysis); },
           "the analysis options the collection was indexed with (query analyses meshes with them)")
       .def(
           "query",
@@ -161,8 +178,7 @@ void bind_collection(py::module_& m) {
             std::vector<QueryResult> results;
             {
               const py::gil_scoped_release release;
-              if (!c.searchable) c.searchable = std::make_unique<const SearchableCollection>(load_searchable(c.reader));
-              results = query_collection(*c.searchable, record, options);
+              results = c.query(record, options);
             }
             py::list out;
             for (std::size_t r = 0; r < results.size(); ++r) {
@@ -182,7 +198,8 @@ void bind_collection(py::module_& m) {
           "Returns a list of dict (defaults: QueryOptions, as `reeb query --help`).\n\n"
           "The k entries nearest to `query` (`reeb query`): a ReebGraph, a mesh (V, F), an entry's name or a "
           "mesh file (both analysed with the collection's analysis options). Each result: rank, name, class, "
-          "distance, signature_distance, index. The collection is read into memory on the first query.")
+          "distance, signature_distance, index. The first query reads the collection's query file (its signature "
+          "index; the candidates' graphs are read per query), or without one the whole collection.")
       .def(
           "distances",
           [](const Collection& c, int threads, const MatchingOptions& matching) {

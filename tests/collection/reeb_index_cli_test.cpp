@@ -223,7 +223,7 @@ TEST(ReebIndexCli, ALinkToTheOutputIsLockedAndWrittenAsItsFile) {
   EXPECT_EQ(status, 0) << out;
   EXPECT_TRUE(std::filesystem::is_symlink(link));
   EXPECT_EQ(CollectionReader(c).size(), 2);
-  EXPECT_EQ(files_in(dir / ""), (std::vector<std::string>{"c.h5", "link.h5", "meshes"}));
+  EXPECT_EQ(files_in(dir / ""), (std::vector<std::string>{"c.h5", "c.query.h5", "link.h5", "meshes"}));
 }
 
 // Before: under a file-size limit with SIGXFSZ at its default action (a
@@ -262,7 +262,7 @@ TEST(ReebIndexCli, ExitStatusSaysWhetherMeshesFailed) {
   const auto [none, none_out] = reeb("index " + q(folder / "bad.off") + " -o " + q(dir / "new.h5"));
   EXPECT_EQ(none, 1) << none_out;
   EXPECT_TRUE(contains(none_out, {"not written"})) << none_out;
-  EXPECT_EQ(files_in(dir / ""), (std::vector<std::string>{"c.h5", "meshes"}));
+  EXPECT_EQ(files_in(dir / ""), (std::vector<std::string>{"c.h5", "c.query.h5", "meshes"}));
 
   // info --list names every entry; distances says how failed rows are filled.
   const auto [info, info_out] = reeb("info " + q(c) + " --list");
@@ -303,7 +303,7 @@ TEST(ReebIndexCli, AFullDiskGivesOneClearErrorKeepsThePreviousFileAndResumeGoesO
                                      " already indexed"}))
       << resumed_out;
   EXPECT_EQ(CollectionReader(c).size(), 5);
-  EXPECT_EQ(files_in(dir / ""), (std::vector<std::string>{"c.h5", "meshes"}));
+  EXPECT_EQ(files_in(dir / ""), (std::vector<std::string>{"c.h5", "c.query.h5", "meshes"}));
 
   // The commands that read a collection and write files: the same (before:
   // distances and export -o reported the error but left partial files).
@@ -318,7 +318,7 @@ TEST(ReebIndexCli, AFullDiskGivesOneClearErrorKeepsThePreviousFileAndResumeGoesO
     EXPECT_TRUE(contains(out, {(dir / "out").string() + ": write error: File too large"})) << out;
     EXPECT_EQ(read_file_bytes(dir / "out"), "previous\n");
   }
-  EXPECT_EQ(files_in(dir / ""), (std::vector<std::string>{"c.h5", "d.matrix", "meshes", "out"}));
+  EXPECT_EQ(files_in(dir / ""), (std::vector<std::string>{"c.h5", "c.query.h5", "d.matrix", "meshes", "out"}));
 }
 
 TEST(ReebIndexCli, ResumeLabelsEveryEntryWithTheClassesGivenAndKeepsThemOtherwise) {

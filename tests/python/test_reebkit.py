@@ -189,6 +189,17 @@ def test_query_equals_reeb_query(collection, reeb):
     assert c.query(mesh, k=1)[0]["distance"] == 0.0
 
 
+def test_query_reads_the_query_file_or_the_whole_collection_alike(collection, tmp_path):
+    # reeb index wrote datasets.query.h5 beside the collection; a copy without it is read whole.
+    assert collection.with_suffix(".query.h5").exists()
+    alone = tmp_path / "alone.h5"
+    alone.write_bytes(collection.read_bytes())
+    mesh = reebkit.load_mesh(DATASETS / "elk.off")
+    with_file = reebkit.Collection(collection).query(mesh, k=8, candidates=5)
+    whole = reebkit.Collection(alone).query(mesh, k=8, candidates=5)
+    assert with_file == whole
+
+
 def test_distances_equal_reeb_distances(collection, reeb, tmp_path):
     c = reebkit.Collection(collection)
     d = c.distances(threads=1)

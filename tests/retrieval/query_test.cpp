@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <optional>
 #include <random>
 
 namespace reebkit::test {
@@ -25,6 +26,18 @@ std::vector<QueryResult> brute_force(const CollectionReader& collection, const G
                    [](const QueryResult& a, const QueryResult& b) { return a.distance < b.distance; });
   all.resize(std::min(all.size(), static_cast<std::size_t>(k)));
   return all;
+}
+
+/// The same entries (index, name, class) at the same distances, rank by rank.
+void expect_same_ranking(const std::vector<QueryResult>& got, const std::vector<QueryResult>& want,
+                         const std::string& what) {
+  ASSERT_EQ(got.size(), want.size()) << what;
+  for (std::size_t r = 0; r < got.size(); ++r) {
+    EXPECT_EQ(got[r].index, want[r].index) << what << " rank " << r;
+    EXPECT_EQ(got[r].name, want[r].name);
+    EXPECT_EQ(got[r].class_label, want[r].class_label);
+    EXPECT_EQ(got[r].distance, want[r].distance);
+  }
 }
 
 TEST(QueryCollection, WithEveryCandidateTheRankingIsBruteForce) {
@@ -48,15 +61,7 @@ TEST(QueryCollection, WithEveryCandidateTheRankingIsBruteForce) {
       QueryOptions options;
       options.k = k;
       options.candidates = static_cast<int>(collection.size());
-      const std::vector<QueryResult> got = query_collection(searchable, query, options);
-      const std::vector<QueryResult> want = brute_force(collection, query, k);
-      ASSERT_EQ(got.size(), want.size()) << query.name;
-      for (std::size_t r = 0; r < got.size(); ++r) {
-        EXPECT_EQ(got[r].index, want[r].index) << query.name << " rank " << r;
-        EXPECT_EQ(got[r].name, want[r].name);
-        EXPECT_EQ(got[r].class_label, want[r].class_label);
-        EXPECT_EQ(got[r].distance, want[r].distance);
-      }
+      expect_same_ranking(query_collection(searchable, query, options), brute_force(collection, query, k), query.name);
     }
   }
 }
@@ -185,6 +190,75 @@ TEST(QueryCollection, RejectsBadOptionsAndFailedQueries) {
   SearchableCollection no_graphs = load_searchable(collection);
   no_graphs.graphs.clear();
   EXPECT_THROW(query_collection(no_graphs, query, QueryOptions{}), InvalidArgument);
+}
+
+TEST(QueryFile, ReadsTheCandidatesGraphsAsTheWholeCollectionHasThem) {
+  const TempDir dir;
+  write_generated_collection(dir / "c.h5");
+  const CollectionReader collection(dir / "c.h5");
+  EXPECT_FALSE(open_query_file(collection).has_value());  // none written yet
+  write_query_file(collection);
+  const std::optional<QueryableFile> file = open_query_file(collection);
+  ASSERT_TRUE(file.has_value());
+  const std::vector<GraphRecord> all = collection.entries(0, collection.size());
+  std::vector<std::int64_t> rows = file->index.row_of();
+  ASSERT_EQ(rows.size(), all.size() - 1);  // the failed entry has no signature row
+  std::reverse(rows.begin(), rows.end());  // any order, an entry twice
+  rows.push_back(rows.front());
+  const std::vector<GraphRecord> lazy = file->file.graphs(rows);
+  ASSERT_EQ(lazy.size(), rows.size());
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    const GraphRecord& e = all[static_cast<std::size_t>(rows[k])];
+    EXPECT_TRUE(lazy[k].ok);
+    EXPECT_EQ(lazy[k].signature, e.signature) << e.name;
+    EXPECT_EQ(lazy[k].nodes, e.nodes) << e.name;
+    EXPECT_EQ(lazy[k].node_attributes, e.node_attributes) << e.name;
+    EXPECT_EQ(lazy[k].edges, e.edges) << e.name;
+  }
+  EXPECT_THROW(file->file.graphs({6}), InvalidArgument);  // the failed entry
+}
+
+TEST(QueryFile, AQueryOnTheFileGivesTheResultsOfTheLoadedCollection) {
+  const TempDir dir;
+  write_generated_collection(dir / "c.h5");
+  const CollectionReader collection(dir / "c.h5");
+  write_query_file(collection);
+  const std::optional<QueryableFile> file = open_query_file(collection);
+  ASSERT_TRUE(file.has_value());
+  const SearchableCollection searchable = load_searchable(collection);
+  EXPECT_EQ(file->index.row_of(), searchable.index.row_of());
+  for (const GraphRecord& query : generated_entries()) {
+    if (!query.ok) continue;
+    for (const int candidates : {1, 4, 100})
+      for (const int k : {1, 3, 20}) {
+        QueryOptions options;
+        options.k = k;
+        options.candidates = candidates;
+        const std::vector<QueryResult> got = query_collection(collection, *file, query, options);
+        const std::vector<QueryResult> want = query_collection(searchable, query, options);
+        expect_same_ranking(got, want, query.name);
+        for (std::size_t r = 0; r < std::min(got.size(), want.size()); ++r)
+          EXPECT_EQ(got[r].signature_distance, want[r].signature_distance) << query.name << " rank " << r;
+      }
+  }
+}
+
+TEST(QueryFile, IsIgnoredOnceTheCollectionChanges) {
+  const TempDir dir;
+  write_generated_collection(dir / "c.h5");
+  write_query_file(CollectionReader(dir / "c.h5"));
+  {
+    CollectionWriter writer(dir / "c.h5", Provenance{}, true);  // resume: one more entry
+    GraphRecord extra = generated_entries().front();
+    extra.name = "extra";
+    writer.append(extra);
+    writer.close();
+  }
+  const CollectionReader grown(dir / "c.h5");
+  EXPECT_FALSE(open_query_file(grown).has_value());
+  // query_collection then reads the whole collection: the new entry is found
+  const std::vector<QueryResult> results = query_collection(grown, generated_entries().front(), {});
+  EXPECT_TRUE(std::any_of(results.begin(), results.end(), [](const QueryResult& r) { return r.name == "extra"; }));
 }
 
 }  // namespace

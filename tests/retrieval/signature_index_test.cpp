@@ -85,6 +85,43 @@ TEST(SignatureIndex, ExactNearestNeighboursForBothKinds) {
   }
 }
 
+TEST(SignatureIndex, ASavedKdTreeLoadsAndFindsTheSameNeighbours) {
+  const std::vector<double> rows = signatures();
+  const SignatureIndex built(rows, kDim);
+  const std::vector<char> saved = built.save();
+  const std::shared_ptr<const double> packed(built.rows(), [](const double*) {});  // owned by `built`
+  const SignatureIndex loaded(packed, built.row_of(), kDim, saved);
+  EXPECT_EQ(loaded.size(), built.size());
+  std::mt19937_64 rng(13);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int trial = 0; trial < 20; ++trial) {
+    std::vector<double> q(kDim);
+    for (double& v : q) v = u(rng);
+    for (const std::int64_t k : {1, 10, 100}) expect_same(loaded.nearest(q, k), brute_force(rows, q, k));
+  }
+  EXPECT_THROW(SignatureIndex(packed, {0, 1}, kDim, saved), InvalidArgument);  // sizes disagree
+  std::vector<char> damaged(saved.begin(), saved.begin() + 8);
+  EXPECT_THROW(SignatureIndex(packed, built.row_of(), kDim, damaged), InvalidArgument);
+  SignatureIndexOptions linear;
+  linear.kind = SignatureIndexKind::Linear;
+  EXPECT_THROW(SignatureIndex(rows, kDim, linear).save(), InvalidArgument);
+}
+
+TEST(SignatureIndex, TiesBeyondTheKthAreChosenByRow) {
+  // 40 rows at the same distance from the query, in an order FLANN's tree
+  // shuffles: the first 5 by row, whichever kind of index.
+  std::vector<double> rows;
+  for (int r = 0; r < 40; ++r)
+    for (int c = 0; c < kDim; ++c) rows.push_back(c == r % kDim ? 1.0 : 0.0);
+  const std::vector<double> q(kDim, 0.0);
+  for (const SignatureIndexKind kind : {SignatureIndexKind::Linear, SignatureIndexKind::KdTreeSingle}) {
+    SignatureIndexOptions options;
+    options.kind = kind;
+    options.leaf_max_size = 2;
+    expect_same(SignatureIndex(rows, kDim, options).nearest(q, 5), brute_force(rows, q, 5));
+  }
+}
+
 TEST(SignatureIndex, RejectsBadInput) {
   EXPECT_THROW(SignatureIndex({1, 2, 3}, 2), InvalidArgument);
   EXPECT_THROW(SignatureIndex({}, 0), InvalidArgument);

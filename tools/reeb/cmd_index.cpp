@@ -3,6 +3,7 @@
 #include "reeb/cli.h"
 #include "reeb/cluster.h"
 #include "reebkit/collection/extract_collection.h"
+#include "reebkit/retrieval/query.h"
 
 #include <filesystem>
 #include <iomanip>
@@ -87,6 +88,9 @@ int run_index(const std::vector<std::string>& args) {
     return 1;
   }
   std::cerr << "wrote " << output << "\n";
+  // What a query reads instead of the whole collection (docs/collection-file.md, "The query file").
+  write_query_file(CollectionReader(output));
+  std::cerr << "wrote " << QueryFile::path_of(output).string() << "\n";
   if (failed == 0 || allow_failures) return 0;
   std::cerr << "reeb index: error: " << failed << " of " << summary.computed()
             << " meshes failed (failed entries of the file; --allow-failures to exit 0)\n";

@@ -1,6 +1,7 @@
 // reeb query collection.h5 MESH_OR_NAME: the meshes of a collection nearest
 // to a query, pre-filtered by graph signature (FLANN, exact) and reranked by
-// graph matching (docs/command-line.md, "Query and distances").
+// graph matching (docs/command-line.md, "Query and distances"); with the
+// collection's query file, reading only the candidates' graphs.
 #include "reeb/cli.h"
 #include "reebkit/core/error.h"
 #include "reebkit/core/timer.h"
@@ -11,16 +12,18 @@
 
 #include <iomanip>
 #include <iostream>
+#include <optional>
 
 namespace reebkit::cli {
 
 namespace {
 
-/// The query's entry: the collection's own when `query` names one of its
-/// meshes, otherwise the mesh file analysed as reeb index analysed the
-/// collection (largest component, the collection's analysis options).
-GraphRecord query_entry(const CollectionReader& collection, const std::string& query) {
-  if (const auto index = collection.find(query)) return collection.entry(*index);
+/// The query's entry: the collection's own entry `index` when `query` names
+/// one of its meshes, otherwise the mesh file analysed as reeb index analysed
+/// the collection (largest component, the collection's analysis options).
+GraphRecord query_entry(const CollectionReader& collection, const std::string& query,
+                        const std::optional<std::int64_t>& index) {
+  if (index) return collection.entry(*index);
   return analyze_mesh_file(query, query, analysis_options_from(collection.provenance().analysis_options));
 }
 
@@ -76,17 +79,26 @@ int run_query(const std::vector<std::string>& args) {
 
   const CollectionReader collection(path);
   Timer timer;
-  const bool in_collection = collection.find(query).has_value();
-  const GraphRecord entry = query_entry(collection, query);
+  const std::optional<std::int64_t> index = collection.find(query);
+  const bool in_collection = index.has_value();
+  const GraphRecord entry = query_entry(collection, query, index);
   if (!entry.ok) throw Error(path + ": mesh '" + query + "' failed when indexed: " + entry.error);
   const double extract_ms = timer.lap();
-  const SearchableCollection searchable = load_searchable(collection);
+  // With a current query file only the signature index and the candidates'
+  // graphs are read; otherwise the whole collection.
+  const std::optional<QueryableFile> file = open_query_file(collection);
+  const std::optional<SearchableCollection> searchable =
+      file ? std::nullopt : std::optional<SearchableCollection>(load_searchable(collection));
   const double load_ms = timer.lap();
-  const std::vector<QueryResult> results = query_collection(searchable, entry, query_options);
+  const std::vector<QueryResult> results = file ? query_collection(collection, *file, entry, query_options)
+                                                : query_collection(*searchable, entry, query_options);
   const double query_ms = timer.lap();
   std::cerr << std::fixed << std::setprecision(2) << (in_collection ? "graph read: " : "graph extracted: ")
-            << extract_ms << " ms, collection read and signature index (" << searchable.index.size()
-            << " graphs): " << load_ms << " ms, query: " << query_ms << " ms\n"
+            << extract_ms << " ms, "
+            << (file ? "signature index read from " + QueryFile::path_of(path).string()
+                     : std::string("collection read and signature index"))
+            << " (" << (file ? file->index : searchable->index).size() << " graphs): " << load_ms
+            << " ms, query: " << query_ms << " ms\n"
             << std::defaultfloat;
 
   if (json) {

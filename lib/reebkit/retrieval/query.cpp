@@ -20,29 +20,40 @@ SearchableCollection load_searchable(const CollectionReader& collection) {
   return searchable;
 }
 
-std::vector<QueryResult> query_collection(const SearchableCollection& collection, const GraphRecord& query,
-                                          const QueryOptions& options) {
+namespace {
+
+void check_query(const GraphRecord& query, const QueryOptions& options) {
   if (!query.ok) throw InvalidArgument("query '" + query.name + "' has no graph: " + query.error);
   if (options.k < 1 || options.candidates < 1 || options.threads < 0)
     throw InvalidArgument("query: need k >= 1, candidates >= 1 and threads >= 0 (k = " + std::to_string(options.k) +
                           ", candidates = " + std::to_string(options.candidates) +
                           ", threads = " + std::to_string(options.threads) + ")");
   check_matching_options(options.matching);
-  if (collection.index.dimension() != kSignatureLength || collection.graphs.size() != collection.entries.size())
-    throw InvalidArgument("query: the signature index or the graphs do not match the collection");
-  const MatchableGraph query_graph = make_matchable_graph(query);
+}
 
-  const std::vector<SignatureNeighbour> nearest =
-      collection.index.nearest(query.signature, std::max(options.k, options.candidates));
+/// The `index` entries nearest to `query` by signature, checked to lie in a
+/// collection of `size` entries.
+std::vector<SignatureNeighbour> nearest_signatures(const SignatureIndex& index, const GraphRecord& query,
+                                                   const QueryOptions& options, std::size_t size) {
+  if (index.dimension() != kSignatureLength)
+    throw InvalidArgument("query: the signature index does not match the collection");
+  std::vector<SignatureNeighbour> nearest = index.nearest(query.signature, std::max(options.k, options.candidates));
   for (const SignatureNeighbour& n : nearest)
-    if (n.row >= static_cast<std::int64_t>(collection.entries.size()))
+    if (n.row >= static_cast<std::int64_t>(size))
       throw InvalidArgument("query: the signature index does not match the collection");
+  return nearest;
+}
+
+/// The best options.k of the candidates `nearest` (graphs[c] the graph of
+/// nearest[c]) by graph matching against `query`, by increasing distance
+/// (ties by increasing index); names and classes left empty.
+std::vector<QueryResult> rank_candidates(const MatchableGraph& query_graph,
+                                         const std::vector<SignatureNeighbour>& nearest,
+                                         const std::vector<const MatchableGraph*>& graphs,
+                                         const QueryOptions& options) {
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
   const auto count = static_cast<std::int64_t>(nearest.size());
-  const auto graph_of = [&](std::int64_t c) -> const MatchableGraph& {
-    return collection.graphs[static_cast<std::size_t>(nearest[static_cast<std::size_t>(c)].row)];
-  };
-
+  const auto graph_of = [&](std::int64_t c) -> const MatchableGraph& { return *graphs[static_cast<std::size_t>(c)]; };
   // Pruning keeps the ranking exact: the k-th best distance among any of
   // the candidates matched so far is >= the k-th best among all of them, and
   // a candidate of the final ranking has bound <= distance <= that, so it is
@@ -85,11 +96,8 @@ std::vector<QueryResult> query_collection(const SearchableCollection& collection
     }
   }
   std::vector<QueryResult> ranked;
-  for (std::size_t c = 0; c < nearest.size(); ++c) {
-    if (!matched[c]) continue;
-    const GraphRecord& entry = collection.entries[static_cast<std::size_t>(nearest[c].row)];
-    ranked.push_back({nearest[c].row, entry.name, entry.class_label, distance[c], nearest[c].distance});
-  }
+  for (std::size_t c = 0; c < nearest.size(); ++c)
+    if (matched[c]) ranked.push_back({nearest[c].row, "", "", distance[c], nearest[c].distance});
   std::sort(ranked.begin(), ranked.end(), [](const QueryResult& a, const QueryResult& b) {
     return a.distance != b.distance ? a.distance < b.distance : a.index < b.index;
   });
@@ -97,8 +105,60 @@ std::vector<QueryResult> query_collection(const SearchableCollection& collection
   return ranked;
 }
 
+}  // namespace
+
+std::vector<QueryResult> query_collection(const SearchableCollection& collection, const GraphRecord& query,
+                                          const QueryOptions& options) {
+  check_query(query, options);
+  if (collection.graphs.size() != collection.entries.size())
+    throw InvalidArgument("query: the signature index or the graphs do not match the collection");
+  const std::vector<SignatureNeighbour> nearest =
+      nearest_signatures(collection.index, query, options, collection.entries.size());
+  std::vector<const MatchableGraph*> graphs;
+  for (const SignatureNeighbour& n : nearest) graphs.push_back(&collection.graphs[static_cast<std::size_t>(n.row)]);
+  std::vector<QueryResult> ranked = rank_candidates(make_matchable_graph(query), nearest, graphs, options);
+  for (QueryResult& r : ranked) {
+    const GraphRecord& entry = collection.entries[static_cast<std::size_t>(r.index)];
+    r.name = entry.name;
+    r.class_label = entry.class_label;
+  }
+  return ranked;
+}
+
+void write_query_file(const CollectionReader& collection) {
+  const SignatureIndex index(collection.signatures(), kSignatureLength);
+  QueryFile::write(collection, index.rows(), index.row_of(), index.save());
+}
+
+std::optional<QueryableFile> open_query_file(const CollectionReader& collection) {
+  std::optional<QueryFile> file = QueryFile::open(collection);
+  if (!file) return std::nullopt;
+  SignatureIndex index(file->rows(), file->row_of(), kSignatureLength, file->saved_index());
+  return QueryableFile{std::move(*file), std::move(index)};
+}
+
+std::vector<QueryResult> query_collection(const CollectionReader& collection, const QueryableFile& file,
+                                          const GraphRecord& query, const QueryOptions& options) {
+  check_query(query, options);
+  const std::vector<SignatureNeighbour> nearest =
+      nearest_signatures(file.index, query, options, static_cast<std::size_t>(collection.size()));
+  std::vector<std::int64_t> rows;
+  for (const SignatureNeighbour& n : nearest) rows.push_back(n.row);
+  const std::vector<MatchableGraph> matchable = make_matchable_graphs(file.file.graphs(rows));
+  std::vector<const MatchableGraph*> graphs;
+  for (const MatchableGraph& g : matchable) graphs.push_back(&g);
+  std::vector<QueryResult> ranked = rank_candidates(make_matchable_graph(query), nearest, graphs, options);
+  for (QueryResult& r : ranked) {
+    r.name = collection.names()[static_cast<std::size_t>(r.index)];
+    r.class_label = collection.class_labels()[static_cast<std::size_t>(r.index)];
+  }
+  return ranked;
+}
+
 std::vector<QueryResult> query_collection(const CollectionReader& collection, const GraphRecord& query,
                                           const QueryOptions& options) {
+  if (const std::optional<QueryableFile> file = open_query_file(collection))
+    return query_collection(collection, *file, query, options);
   return query_collection(load_searchable(collection), query, options);
 }
 

@@ -10,6 +10,7 @@
 #include "reebkit/store/collection_file.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -62,7 +63,29 @@ SearchableCollection load_searchable(const CollectionReader& collection);
 std::vector<QueryResult> query_collection(const SearchableCollection& collection, const GraphRecord& query,
                                           const QueryOptions& options = {});
 
-/// The same for one query: load_searchable, then query_collection.
+/// A collection queried without reading it whole: the signature index of its
+/// query file (store/collection_file.h, QueryFile), the saved tree loaded and
+/// the rows mapped, and each candidate's graph read from that file when it is one.
+struct QueryableFile {
+  QueryFile file;
+  SignatureIndex index;
+};
+
+/// Builds the signature index of `collection` (a k-d tree) and writes its
+/// query file with it (QueryFile::write).
+void write_query_file(const CollectionReader& collection);
+
+/// The query file of `collection` with its signature index, or nullopt when
+/// there is none for the collection as it is (QueryFile::open).
+std::optional<QueryableFile> open_query_file(const CollectionReader& collection);
+
+/// query_collection on the candidates' graphs read from `file`: the same
+/// results as on load_searchable(collection).
+std::vector<QueryResult> query_collection(const CollectionReader& collection, const QueryableFile& file,
+                                          const GraphRecord& query, const QueryOptions& options = {});
+
+/// The same for one query: with the query file when there is one for the
+/// collection as it is, otherwise load_searchable, then query_collection.
 std::vector<QueryResult> query_collection(const CollectionReader& collection, const GraphRecord& query,
                                           const QueryOptions& options = {});
 

@@ -25,6 +25,8 @@
 
 #include <H5Cpp.h>
 #include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -37,6 +39,7 @@
 #include <functional>
 #include <limits>
 #include <new>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 #include <type_traits>
@@ -138,6 +141,24 @@ auto guarded(const fs::path& path, const char* doing, Body&& body) {
     const std::string hdf5 = "HDF5: " + e.getFuncName() + ": " + e.getDetailMsg();
     fail(path, std::string(doing) + ": " + (reason.empty() ? hdf5 : reason + " (" + hdf5 + ")"));
   }
+}
+
+/// Runs `write`, which writes `temporary`, then puts `temporary` in place of
+/// `path`; when `write` throws, runs `on_failure`, removes `temporary` and
+/// rethrows (the file at `path` stays as it was).
+template <typename Write, typename OnFailure>
+void replace_file(const fs::path& path, const fs::path& temporary, Write&& write, OnFailure&& on_failure) {
+  try {
+    write();
+  } catch (...) {
+    on_failure();
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    throw;
+  }
+  std::error_code error;
+  fs::rename(temporary, path, error);
+  if (error) fail(path, "cannot replace it with " + temporary.string() + ": " + error.message());
 }
 
 /// One extendible dataset of `width` columns (width 0: one-dimensional).
@@ -551,21 +572,27 @@ struct Tables {
   }
 };
 
+/// Opens the dataset `name` of `file` as a table of `spec`'s type and columns.
+Table open_table(const H5::H5File& file, const char* name, const Dataset& spec) {
+  Table t;
+  t.dataset = file.openDataSet(name);
+  t.type = *spec.type;
+  t.width = spec.columns.size();
+  hsize_t dims[2] = {0, 0};
+  const H5::DataSpace space = t.dataset.getSpace();
+  if (space.getSimpleExtentNdims() != t.rank())
+    throw H5::DataSetIException("open", std::string(name) + ": unexpected rank");
+  space.getSimpleExtentDims(dims);
+  if (t.width != 0 && dims[1] != t.width)
+    throw H5::DataSetIException("open", std::string(name) + ": unexpected column count");
+  t.rows = dims[0];
+  return t;
+}
+
 /// Opens every dataset of `file` (reading, or appending after the rows it has).
 Tables open_tables(const H5::H5File& file) {
   Tables tables;
-  for (const Dataset& spec : datasets()) {
-    Table& t = tables.table.emplace_back();
-    t.dataset = file.openDataSet(spec.name);
-    t.type = *spec.type;
-    t.width = spec.columns.size();
-    hsize_t dims[2] = {0, 0};
-    const H5::DataSpace space = t.dataset.getSpace();
-    if (space.getSimpleExtentNdims() != t.rank()) throw H5::DataSetIException("open", "unexpected rank");
-    space.getSimpleExtentDims(dims);
-    if (t.width != 0 && dims[1] != t.width) throw H5::DataSetIException("open", "unexpected column count");
-    t.rows = dims[0];
-  }
+  for (const Dataset& spec : datasets()) tables.table.push_back(open_table(file, spec.name, spec));
   tables.count = file.openDataSet("count");
   return tables;
 }
@@ -608,7 +635,6 @@ struct Snapshot {
   std::int64_t size = 0;
   std::vector<std::string> names, class_labels;
   std::vector<std::uint64_t> hashes;
-  std::vector<double> signatures;
   /// The offsets (size + 1, checked) into each part an entry has rows of.
   std::array<std::vector<std::int64_t>, kPartCount> offsets;
   Provenance provenance;
@@ -650,6 +676,7 @@ std::vector<std::string> read_strings(const Tables& t, const Snapshot& s, const 
   const std::vector<std::int64_t>& ends = s.offsets[datasets()[d].part];
   const auto text = t.table[d].read_vector<char>(0, static_cast<hsize_t>(ends.back()));
   std::vector<std::string> out;
+  out.reserve(ends.size() - 1);
   for (std::size_t k = 0; k + 1 < ends.size(); ++k) out.emplace_back(text.data() + ends[k], text.data() + ends[k + 1]);
   return out;
 }
@@ -671,7 +698,6 @@ Snapshot read_snapshot(const H5::H5File& file, const Tables& t) {
   s.names = read_strings(t, s, "name");
   s.class_labels = read_strings(t, s, "class");
   s.hashes = t.named("content_hash").read_vector<std::uint64_t>(0, g);
-  s.signatures = t.named("signature").read_vector<double>(0, g);
   s.provenance.reebkit_version = read_string_attribute(file, "reebkit_version");
   s.provenance.options = read_string_attribute(file, "options");
   s.provenance.command = read_string_attribute(file, "command");
@@ -756,15 +782,19 @@ void print_hdf5_error_stacks(bool on) { print_error_stacks = on; }
 
 struct CollectionReader::Impl : OpenCollection {
   fs::path path;
-  std::unordered_map<std::string, std::int64_t> by_name;
+  /// The entries by name, built on the second find(): the first scans the
+  /// names (a query by name need not hash every name of a large collection).
+  mutable std::unordered_map<std::string, std::int64_t> by_name;
+  mutable bool found_once = false;
+  /// The signature matrix, read on the first signatures() (a query with a
+  /// query file never reads it).
+  mutable std::optional<std::vector<double>> signatures;
 };
 
 CollectionReader::CollectionReader(const fs::path& path) : impl_(std::make_unique<Impl>()) {
   H5::Exception::dontPrint();
   impl_->path = path;
   static_cast<OpenCollection&>(*impl_) = open_collection(path);
-  for (std::int64_t i = 0; i < impl_->snapshot.size; ++i)
-    impl_->by_name.emplace(impl_->snapshot.names[static_cast<std::size_t>(i)], i);
 }
 
 CollectionReader::~CollectionReader() = default;
@@ -774,10 +804,25 @@ std::int64_t CollectionReader::size() const { return impl_->snapshot.size; }
 const std::vector<std::string>& CollectionReader::names() const { return impl_->snapshot.names; }
 const std::vector<std::string>& CollectionReader::class_labels() const { return impl_->snapshot.class_labels; }
 const std::vector<std::uint64_t>& CollectionReader::content_hashes() const { return impl_->snapshot.hashes; }
-const std::vector<double>& CollectionReader::signatures() const { return impl_->snapshot.signatures; }
+const std::vector<double>& CollectionReader::signatures() const {
+  if (!impl_->signatures)
+    impl_->signatures = guarded(impl_->path, "reading the signatures", [&] {
+      return impl_->tables.named("signature").read_vector<double>(0, static_cast<hsize_t>(size()));
+    });
+  return *impl_->signatures;
+}
 const Provenance& CollectionReader::provenance() const { return impl_->snapshot.provenance; }
 
 std::optional<std::int64_t> CollectionReader::find(const std::string& name) const {
+  const std::vector<std::string>& names = impl_->snapshot.names;
+  if (!impl_->found_once) {
+    impl_->found_once = true;
+    const auto at = std::find(names.begin(), names.end(), name);
+    if (at == names.end()) return std::nullopt;
+    return at - names.begin();
+  }
+  if (impl_->by_name.empty())
+    for (std::size_t i = 0; i < names.size(); ++i) impl_->by_name.emplace(names[i], static_cast<std::int64_t>(i));
   const auto it = impl_->by_name.find(name);
   if (it == impl_->by_name.end()) return std::nullopt;
   return it->second;
@@ -968,28 +1013,23 @@ CollectionWriter::CollectionWriter(const fs::path& path, const Provenance& prove
   // Resume: copy the committed entries into a fresh file, then put it in place.
   fs::path temporary = path;
   temporary += ".resume-tmp";
-  try {
-    const OpenCollection old = open_collection(path);
-    w.write_step(temporary, "creating", [&] { w.create(temporary, provenance); });
-    const std::int64_t n = old.snapshot.size;
-    for (std::int64_t first = 0; first < n; first += static_cast<std::int64_t>(kBatchEntries)) {
-      const std::int64_t count = std::min<std::int64_t>(static_cast<std::int64_t>(kBatchEntries), n - first);
-      auto entries = guarded(path, "reading", [&] { return read_entries(old.tables, old.snapshot, first, count); });
-      for (GraphRecord& e : entries) {
-        w.existing.emplace_back(e.name, e.content_hash);
-        append(std::move(e));
-      }
-    }
-    w.write_step(temporary, "writing", [&] { w.commit(); });
-  } catch (...) {
-    w.abandon();
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    throw;
-  }
-  std::error_code error;
-  fs::rename(temporary, path, error);
-  if (error) fail(path, "cannot replace it with " + temporary.string() + ": " + error.message());
+  replace_file(
+      path, temporary,
+      [&] {
+        const OpenCollection old = open_collection(path);
+        w.write_step(temporary, "creating", [&] { w.create(temporary, provenance); });
+        const std::int64_t n = old.snapshot.size;
+        for (std::int64_t first = 0; first < n; first += static_cast<std::int64_t>(kBatchEntries)) {
+          const std::int64_t count = std::min<std::int64_t>(static_cast<std::int64_t>(kBatchEntries), n - first);
+          auto entries = guarded(path, "reading", [&] { return read_entries(old.tables, old.snapshot, first, count); });
+          for (GraphRecord& e : entries) {
+            w.existing.emplace_back(e.name, e.content_hash);
+            append(std::move(e));
+          }
+        }
+        w.write_step(temporary, "writing", [&] { w.commit(); });
+      },
+      [&] { w.abandon(); });
 }
 
 CollectionWriter::~CollectionWriter() {
@@ -1053,6 +1093,226 @@ void CollectionWriter::close() {
     w.tables = Tables{};
     w.file.close();
   });
+}
+
+// ---------------------------------------------------------------------------
+// Query file
+
+namespace {
+
+/// Version of the query file's layout (its attribute `layout`).
+constexpr int kQueryFileLayout = 1;
+/// The collection's datasets a query file copies (with the offsets of their
+/// part): what graph matching reads of a candidate.
+constexpr std::array<const char*, 3> kQueryGraphDatasets = {"nodes", "node_attr", "edges"};
+/// Entries a query file is written from per read of the collection.
+constexpr std::int64_t kQueryWriteBatch = 4096;
+
+/// The offsets dataset of `part` in a query file.
+const char* query_offsets_name(Part part) { return part == kNode ? "node_offset" : "edge_offset"; }
+
+/// A contiguous, unfiltered dataset of `rows` rows of `spec`'s type and columns.
+Table create_contiguous(H5::H5File& file, const char* name, const Dataset& spec, hsize_t rows) {
+  Table t;
+  t.type = *spec.type;
+  t.width = spec.columns.size();
+  const hsize_t dims[2] = {rows, t.width};
+  t.dataset = file.createDataSet(name, t.type, H5::DataSpace(t.rank(), dims));
+  t.rows = rows;
+  return t;
+}
+
+/// Writes `n` rows from `data` at row `first` of a table of fixed size.
+void write_rows(const Table& t, const void* data, hsize_t first, hsize_t n) {
+  if (n == 0) return;
+  const auto [file_space, memory_space] = t.select_rows(first, n);
+  t.dataset.write(data, t.type, memory_space, file_space);
+}
+
+std::int64_t read_int_attribute(const H5::H5Object& object, const char* name) {
+  std::int64_t value = -1;
+  if (object.attrExists(name)) object.openAttribute(name).read(H5::PredType::NATIVE_INT64, &value);
+  return value;
+}
+
+void write_int_attribute(H5::H5Object& object, const char* name, std::int64_t value) {
+  object.createAttribute(name, H5::PredType::NATIVE_INT64, H5::DataSpace(H5S_SCALAR))
+      .write(H5::PredType::NATIVE_INT64, &value);
+}
+
+/// The rows of the contiguous dataset `t` of the file `path`, of the native
+/// type `type`, mapped read-only (nullptr when it has none); the mapping
+/// lasts while a copy of the pointer does.
+std::shared_ptr<const char> map_rows(const fs::path& path, const Table& t, const H5::PredType& type) {
+  const std::size_t bytes = static_cast<std::size_t>(t.rows) * t.row_bytes();
+  if (bytes == 0) return nullptr;
+  const haddr_t address = H5Dget_offset(t.dataset.getId());
+  if (address == HADDR_UNDEF || !(t.dataset.getDataType() == type))
+    fail(path, t.dataset.getObjName() + " is not contiguous or not of the native type");
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) fail(path, std::string("cannot open: ") + std::strerror(errno));
+  struct stat status {};
+  const auto page = static_cast<haddr_t>(::sysconf(_SC_PAGESIZE));
+  const haddr_t start = address / page * page;
+  const std::size_t length = bytes + static_cast<std::size_t>(address - start);
+  if (::fstat(fd, &status) != 0 || static_cast<haddr_t>(status.st_size) < address + bytes) {  // else SIGBUS
+    ::close(fd);
+    fail(path, "shorter than its dataset " + t.dataset.getObjName() + " (truncated?)");
+  }
+  void* map = ::mmap(nullptr, length, PROT_READ, MAP_SHARED, fd, static_cast<off_t>(start));
+  const int error = errno;
+  ::close(fd);
+  if (map == MAP_FAILED) fail(path, "cannot map " + t.dataset.getObjName() + ": " + std::strerror(error));
+  const std::shared_ptr<const char> mapping(static_cast<const char*>(map),
+                                            [length](const char* p) { ::munmap(const_cast<char*>(p), length); });
+  return {mapping, mapping.get() + (address - start)};
+}
+
+}  // namespace
+
+struct QueryFile::Impl {
+  fs::path path;
+  H5::H5File file;
+  std::vector<std::int64_t> row_of;
+  std::array<std::vector<std::int64_t>, kPartCount> offsets;  ///< kNode and kEdge: #entries + 1
+  Table signature, index;
+  std::array<Table, kQueryGraphDatasets.size()> graph;
+  /// The rows of `signature` and `graph`, mapped (map_rows).
+  std::shared_ptr<const char> signature_rows;
+  std::array<std::shared_ptr<const char>, kQueryGraphDatasets.size()> graph_rows;
+};
+
+QueryFile::QueryFile() : impl_(std::make_unique<Impl>()) {}
+QueryFile::QueryFile(QueryFile&&) noexcept = default;
+QueryFile& QueryFile::operator=(QueryFile&&) noexcept = default;
+QueryFile::~QueryFile() = default;
+
+fs::path QueryFile::path_of(const fs::path& collection) {
+  // Beside the file a link to the collection names, whichever name is used.
+  fs::path path = fs::is_symlink(collection) ? fs::weakly_canonical(collection) : collection;
+  return path.replace_extension(".query.h5");
+}
+
+void QueryFile::write(const CollectionReader& collection, const double* rows, const std::vector<std::int64_t>& row_of,
+                      const std::vector<char>& saved_index) {
+  const CollectionReader::Impl& c = *collection.impl_;
+  const fs::path path = path_of(c.path);
+  fs::path temporary = path;
+  temporary += ".partial";
+  const Dataset& signature_spec = datasets()[dataset_index("signature")];
+  const auto write_file = [&] {
+    H5::H5File file(temporary.string(), H5F_ACC_TRUNC);
+    const int layout = kQueryFileLayout;
+    file.createAttribute("layout", H5::PredType::NATIVE_INT, H5::DataSpace(H5S_SCALAR))
+        .write(H5::PredType::NATIVE_INT, &layout);
+    write_int_attribute(file, "collection_count", c.snapshot.size);
+    write_string_attribute(file, "collection_created", c.snapshot.provenance.created);
+    write_rows(create_contiguous(file, "signature", signature_spec, row_of.size()), rows, 0, row_of.size());
+    const Dataset rows_spec = make_dataset("signature_row", type_of<std::int64_t>(), kEntry);
+    write_rows(create_contiguous(file, "signature_row", rows_spec, row_of.size()), row_of.data(), 0, row_of.size());
+    const Dataset bytes_spec = make_dataset("index", type_of<char>(), kEntry);
+    write_rows(create_contiguous(file, "index", bytes_spec, saved_index.size()), saved_index.data(), 0,
+               saved_index.size());
+    for (const Part part : {kNode, kEdge}) {
+      const std::vector<std::int64_t>& offset = c.snapshot.offsets[part];
+      const Dataset spec = make_dataset(query_offsets_name(part), type_of<std::int64_t>(), kEntry);
+      write_rows(create_contiguous(file, spec.name, spec, offset.size()), offset.data(), 0, offset.size());
+    }
+    std::vector<Table> graph;
+    for (const char* name : kQueryGraphDatasets) {
+      const Dataset& spec = datasets()[dataset_index(name)];
+      graph.push_back(create_contiguous(file, name, spec, static_cast<hsize_t>(c.snapshot.offsets[spec.part].back())));
+      if (!spec.columns.empty()) write_text_attribute(graph.back().dataset, "columns", spec.columns, false);
+    }
+    for (std::int64_t first = 0; first < c.snapshot.size; first += kQueryWriteBatch) {
+      const std::int64_t n = std::min(kQueryWriteBatch, c.snapshot.size - first);
+      const std::vector<GraphRecord> entries = read_entries(c.tables, c.snapshot, first, n);
+      for (std::size_t d = 0; d < kQueryGraphDatasets.size(); ++d) {
+        const Dataset& spec = datasets()[dataset_index(kQueryGraphDatasets[d])];
+        std::vector<char> data;
+        for (const GraphRecord& e : entries) spec.put(e, data);
+        const auto row0 = static_cast<hsize_t>(c.snapshot.offsets[spec.part][static_cast<std::size_t>(first)]);
+        write_rows(graph[d], data.data(), row0, data.size() / graph[d].row_bytes());
+      }
+    }
+    file.close();
+  };
+  replace_file(
+      path, temporary, [&] { guarded(temporary, "writing", write_file); }, [] {});
+}
+
+std::optional<QueryFile> QueryFile::open(const CollectionReader& collection) {
+  const CollectionReader::Impl& c = *collection.impl_;
+  const fs::path path = path_of(c.path);
+  if (!fs::exists(path)) return std::nullopt;
+  if (H5Fis_hdf5(path.c_str()) <= 0) fail(path, "not an HDF5 file (remove it: queries then read the collection)");
+  QueryFile q;
+  Impl& f = *q.impl_;
+  f.path = path;
+  const bool current = guarded(path, "opening", [&] {
+    f.file = H5::H5File(path.string(), H5F_ACC_RDONLY);
+    return layout_version(f.file) == kQueryFileLayout &&
+           read_int_attribute(f.file, "collection_count") == c.snapshot.size &&
+           read_string_attribute(f.file, "collection_created") == c.snapshot.provenance.created;
+  });
+  if (!current) return std::nullopt;
+  guarded(path, "reading", [&] {
+    const Dataset& signature_spec = datasets()[dataset_index("signature")];
+    f.signature = open_table(f.file, "signature", signature_spec);
+    const Table rows = open_table(f.file, "signature_row", make_dataset("", type_of<std::int64_t>(), kEntry));
+    f.row_of = rows.read_vector<std::int64_t>(0, rows.rows);
+    if (f.signature.rows != rows.rows || !std::is_sorted(f.row_of.begin(), f.row_of.end()) ||
+        (!f.row_of.empty() && (f.row_of.front() < 0 || f.row_of.back() >= c.snapshot.size)))
+      throw H5::DataSetIException("read", "signature_row is not increasing entries of the signature rows");
+    f.index = open_table(f.file, "index", make_dataset("", type_of<char>(), kEntry));
+    for (std::size_t d = 0; d < kQueryGraphDatasets.size(); ++d) {
+      const Dataset& spec = datasets()[dataset_index(kQueryGraphDatasets[d])];
+      f.graph[d] = open_table(f.file, spec.name, spec);
+      const Table offsets =
+          open_table(f.file, query_offsets_name(spec.part), make_dataset("", type_of<std::int64_t>(), kEntry));
+      if (offsets.rows != static_cast<hsize_t>(c.snapshot.size) + 1)
+        throw H5::DataSetIException("read", std::string(query_offsets_name(spec.part)) + " is not #entries + 1 long");
+      f.offsets[spec.part] = offsets.read_vector<std::int64_t>(0, offsets.rows);
+      check_offsets(f.offsets[spec.part], f.graph[d].rows, query_offsets_name(spec.part));
+    }
+  });
+  f.signature_rows = map_rows(path, f.signature, *datasets()[dataset_index("signature")].type);
+  for (std::size_t d = 0; d < kQueryGraphDatasets.size(); ++d)
+    f.graph_rows[d] = map_rows(path, f.graph[d], *datasets()[dataset_index(kQueryGraphDatasets[d])].type);
+  return q;
+}
+
+std::shared_ptr<const double> QueryFile::rows() const {
+  return {impl_->signature_rows, reinterpret_cast<const double*>(impl_->signature_rows.get())};
+}
+
+const std::vector<std::int64_t>& QueryFile::row_of() const { return impl_->row_of; }
+
+std::vector<char> QueryFile::saved_index() const {
+  return guarded(impl_->path, "reading", [&] { return impl_->index.read_vector<char>(0, impl_->index.rows); });
+}
+
+std::vector<GraphRecord> QueryFile::graphs(const std::vector<std::int64_t>& entries) const {
+  const Impl& f = *impl_;
+  const Dataset& signature_spec = datasets()[dataset_index("signature")];
+  std::vector<GraphRecord> out(entries.size());
+  for (std::size_t k = 0; k < entries.size(); ++k) {
+    const auto at = std::lower_bound(f.row_of.begin(), f.row_of.end(), entries[k]);
+    if (at == f.row_of.end() || *at != entries[k])
+      throw InvalidArgument(f.path.string() + ": entry " + std::to_string(entries[k]) + " has no signature row");
+    GraphRecord& g = out[k];
+    g.ok = true;
+    const auto packed = static_cast<std::size_t>(at - f.row_of.begin());
+    signature_spec.take(g, f.signature_rows.get() + packed * f.signature.row_bytes(), f.signature.columns());
+    for (std::size_t d = 0; d < kQueryGraphDatasets.size(); ++d) {
+      const Dataset& spec = datasets()[dataset_index(kQueryGraphDatasets[d])];
+      const auto e = static_cast<std::size_t>(entries[k]);
+      const auto first = static_cast<std::size_t>(f.offsets[spec.part][e]);
+      const auto n = static_cast<std::size_t>(f.offsets[spec.part][e + 1]) - first;
+      spec.take(g, f.graph_rows[d].get() + first * f.graph[d].row_bytes(), n * f.graph[d].columns());
+    }
+  }
+  return out;
 }
 
 }  // namespace reebkit

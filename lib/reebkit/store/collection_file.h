@@ -114,6 +114,52 @@ class CollectionReader {
   const Provenance& provenance() const;
 
  private:
+  friend class QueryFile;
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// What query by example needs of a collection, beside it so that a query
+/// reads that and not the whole collection: COLLECTION with the extension
+/// `.query.h5` (docs/collection-file.md, "The query file"). Every dataset is
+/// contiguous and unfiltered: the saved pre-filter index loads in one read,
+/// and the signature rows and CSR copies of `nodes`, `node_attr` and `edges`
+/// are mapped read-only (mmap: the pages a query touches are read, and the
+/// system's page cache is shared by the processes that query the
+/// collection), so that a candidate's graph is read when it is one. Written
+/// for one state of the collection (its `count` and `created`); another
+/// state ignores it.
+class QueryFile {
+ public:
+  /// Where the query file of `collection` lies.
+  static std::filesystem::path path_of(const std::filesystem::path& collection);
+  /// Writes the query file of `collection` (temp file + rename): the
+  /// signature rows without NaN, packed (`rows`, row-major, kSignatureLength
+  /// columns), their entries (`row_of`, increasing), `saved_index` (opaque
+  /// bytes) and every entry's nodes and edges. Throws Error naming the file.
+  static void write(const CollectionReader& collection, const double* rows, const std::vector<std::int64_t>& row_of,
+                    const std::vector<char>& saved_index);
+  /// The query file of `collection`, its offsets read; nullopt when there is
+  /// none or it was written for another state of the collection. Throws
+  /// Error naming the file when it is there but unreadable.
+  static std::optional<QueryFile> open(const CollectionReader& collection);
+  QueryFile(QueryFile&&) noexcept;
+  QueryFile& operator=(QueryFile&&) noexcept;
+  ~QueryFile();
+
+  /// The packed signature rows (row_of().size() x kSignatureLength), mapped;
+  /// the mapping lasts while a copy of the pointer does.
+  std::shared_ptr<const double> rows() const;
+  /// The rows' entries and the saved index, one read each (as write() took them).
+  const std::vector<std::int64_t>& row_of() const;
+  std::vector<char> saved_index() const;
+  /// Entries `entries` (each in row_of()) with what graph matching reads
+  /// (ok, signature, nodes, node_attributes, edges; the other members
+  /// empty), copied from the mapped rows; in the order of `entries`.
+  std::vector<GraphRecord> graphs(const std::vector<std::int64_t>& entries) const;
+
+ private:
+  QueryFile();
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
