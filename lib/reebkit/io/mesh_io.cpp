@@ -27,22 +27,27 @@ std::string unsupported(const std::string& extension, const std::string& problem
   return (extension.empty() ? "no file extension" : problem + " '" + extension + "'") + " (supported: " + supported + ")";
 }
 
-}  // namespace
-
-PolygonSoup parse_polygon_soup(std::string_view bytes, const std::filesystem::path& path) {
+/// The reader of `path`'s format, after its extension; throws MeshFileError
+/// for an extension it does not know.
+using Parser = PolygonSoup (*)(std::string_view, std::string);
+Parser parser_of(const std::filesystem::path& path) {
   const std::string extension = lower_extension(path);
-  if (extension == ".off") return parse_off(bytes, path.string());
-  if (extension == ".obj") return parse_obj(bytes, path.string());
-  if (extension == ".ply") return parse_ply(bytes, path.string());
-  if (extension == ".stl") return parse_stl(bytes, path.string());
+  if (extension == ".off") return parse_off;
+  if (extension == ".obj") return parse_obj;
+  if (extension == ".ply") return parse_ply;
+  if (extension == ".stl") return parse_stl;
   throw MeshFileError(path.string(), unsupported(extension, "unknown mesh format", ".off, .obj, .ply, .stl"));
 }
 
+}  // namespace
+
+PolygonSoup parse_polygon_soup(std::string_view bytes, const std::filesystem::path& path) {
+  return parser_of(path)(bytes, path.string());
+}
+
 PolygonSoup read_polygon_soup(const std::filesystem::path& path) {
-  const std::string extension = lower_extension(path);
-  if (extension != ".off" && extension != ".obj" && extension != ".ply" && extension != ".stl")
-    return parse_polygon_soup({}, path);  // the error, before the file is read
-  return parse_polygon_soup(read_file_bytes(path), path);
+  const Parser parse = parser_of(path);  // an unknown extension is an error before the file is read
+  return parse(read_file_bytes(path), path.string());
 }
 
 void write_mesh(const std::filesystem::path& path, const Mesh& mesh) {
