@@ -146,7 +146,9 @@ void BM_ExtremaPersistence_Torus100kFaces(benchmark::State& state) {
 BENCHMARK(BM_ExtremaPersistence_Torus100kFaces)->Unit(benchmark::kMillisecond);
 
 // Six-armed stars: levels 6 = 82k faces, 7 = 328k faces.
-void BM_FeaturesAndQuotient_Star(benchmark::State& state) { run_features(state, star_case(static_cast<int>(state.range(0)))); }
+void BM_FeaturesAndQuotient_Star(benchmark::State& state) {
+  run_features(state, star_case(static_cast<int>(state.range(0))));
+}
 BENCHMARK(BM_FeaturesAndQuotient_Star)->Arg(6)->Arg(7)->Unit(benchmark::kMillisecond);
 void BM_FeaturesAndQuotient_Star_FMM(benchmark::State& state) {
   run_features(state, star_case(static_cast<int>(state.range(0))), Geodesic::FastMarching);
@@ -184,18 +186,18 @@ void register_shrec() {
   shrec.mesh = load_mesh(largest).components.front();
   shrec.graph = build_mesh_graph(shrec.mesh);
   const std::string name = largest.filename().string();
-  benchmark::RegisterBenchmark(("BM_FeaturesAndQuotient_SHREC07/" + name).c_str(),
-                               [](benchmark::State& state) { run_features(state, shrec); })
-      ->Unit(benchmark::kMillisecond);
-  benchmark::RegisterBenchmark(("BM_FeaturesAndQuotient_SHREC07_FMM/" + name).c_str(),
-                               [](benchmark::State& state) { run_features(state, shrec, Geodesic::FastMarching); })
-      ->Unit(benchmark::kMillisecond);
-  benchmark::RegisterBenchmark(("BM_DijkstraFullPass_SHREC07/" + name).c_str(),
-                               [](benchmark::State& state) { run_full_passes<DijkstraSolver>(state, shrec); })
-      ->Unit(benchmark::kMillisecond);
-  benchmark::RegisterBenchmark(("BM_FastMarchingFullPass_SHREC07/" + name).c_str(),
-                               [](benchmark::State& state) { run_full_passes<FastMarchingSolver>(state, shrec); })
-      ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark(("BM_FeaturesAndQuotient_SHREC07/" + name).c_str(), [](benchmark::State& state) {
+    run_features(state, shrec);
+  })->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark(("BM_FeaturesAndQuotient_SHREC07_FMM/" + name).c_str(), [](benchmark::State& state) {
+    run_features(state, shrec, Geodesic::FastMarching);
+  })->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark(("BM_DijkstraFullPass_SHREC07/" + name).c_str(), [](benchmark::State& state) {
+    run_full_passes<DijkstraSolver>(state, shrec);
+  })->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark(("BM_FastMarchingFullPass_SHREC07/" + name).c_str(), [](benchmark::State& state) {
+    run_full_passes<FastMarchingSolver>(state, shrec);
+  })->Unit(benchmark::kMillisecond);
 }
 
 }  // namespace

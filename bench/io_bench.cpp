@@ -55,8 +55,8 @@ class TorusFiles {
   const std::filesystem::path& get(const std::string& extension) {
     auto [it, inserted] = paths_.try_emplace(extension);
     if (inserted) {
-      it->second = std::filesystem::temp_directory_path() /
-                   ("reebkit_io_bench_" + std::to_string(::getpid()) + extension);
+      it->second =
+          std::filesystem::temp_directory_path() / ("reebkit_io_bench_" + std::to_string(::getpid()) + extension);
       reebkit::write_mesh(it->second, torus(1000, 500));
     }
     return it->second;
@@ -78,8 +78,8 @@ void read_polygon_soup(benchmark::State& state, const std::string& extension) {
   }
   state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * std::filesystem::file_size(path)));
   state.counters["faces"] = faces;
-  state.counters["faces/s"] =
-      benchmark::Counter(static_cast<double>(faces) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["faces/s"] = benchmark::Counter(static_cast<double>(faces) * static_cast<double>(state.iterations()),
+                                                 benchmark::Counter::kIsRate);
 }
 
 void load_mesh(benchmark::State& state, const std::string& extension) {

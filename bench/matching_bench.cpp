@@ -56,9 +56,10 @@ int main(int argc, char** argv) {
     std::sort(sizes.begin(), sizes.end());
     const std::size_t n = graphs.size();
     const double pairs = static_cast<double>(n) * static_cast<double>(n - 1) / 2.0;
-    std::printf("%s: %zu graphs (read + matchable form %.0f ms), nodes per graph: min %d, median %d, max %d; "
-                "%.0f pairs\n",
-                argv[1], n, read_ms, sizes.front(), sizes[n / 2], sizes.back(), pairs);
+    std::printf(
+        "%s: %zu graphs (read + matchable form %.0f ms), nodes per graph: min %d, median %d, max %d; "
+        "%.0f pairs\n",
+        argv[1], n, read_ms, sizes.front(), sizes[n / 2], sizes.back(), pairs);
     reebkit::MatchingOptions no_refinement;
     no_refinement.refine_rounds = 0;
     for (const auto& [label, options] :

@@ -136,8 +136,8 @@ int main(int argc, char** argv) {
   std::vector<Measurement> tori;
   for (const int minor : {50, 89, 158, 281, 500}) {
     const int major = 4 * minor;
-    tori.push_back(measure("torus " + std::to_string(major) + "x" + std::to_string(minor),
-                           make_torus(major, minor, 1.0, 0.35)));
+    tori.push_back(
+        measure("torus " + std::to_string(major) + "x" + std::to_string(minor), make_torus(major, minor, 1.0, 0.35)));
     print(tori.back());
   }
   // Least-squares slope of log(time) against log(vertices).
@@ -171,7 +171,8 @@ int main(int argc, char** argv) {
     print(measure("star 6 arms, level " + std::to_string(levels), make_star(star)));
   }
   const std::filesystem::path data = REEBKIT_UNPACKED_DATASETS;
-  for (const char* file : {"shrec07_watertight/305.off", "cgal_meshes/bunny00.off", "cgal_meshes/refined_elephant.off"}) {
+  for (const char* file :
+       {"shrec07_watertight/305.off", "cgal_meshes/bunny00.off", "cgal_meshes/refined_elephant.off"}) {
     if (std::filesystem::exists(data / file)) print(measure(file, load_mesh(data / file).components.front()));
   }
   return 0;

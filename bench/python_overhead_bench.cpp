@@ -26,10 +26,10 @@ int main(int argc, char** argv) {
   const int runs = std::stoi(argv[2]);
   for (int run = 0; run < runs; ++run) {
     reebkit::Timer timer;
-    const auto graph = reebkit::python::graph_of(
-        reebkit::python::mesh_from_arrays(mesh.vertices.data(), mesh.num_vertices(), mesh.triangles.data(),
-                                          mesh.num_triangles()),
-        reebkit::AnalysisOptions{});
+    const auto graph =
+        reebkit::python::graph_of(reebkit::python::mesh_from_arrays(mesh.vertices.data(), mesh.num_vertices(),
+                                                                    mesh.triangles.data(), mesh.num_triangles()),
+                                  reebkit::AnalysisOptions{});
     std::printf("%.3f\n", timer.lap());
     if (graph.record.nodes.empty()) return 1;
   }

@@ -57,8 +57,8 @@ GraphRecord synthetic_entry(std::int64_t i, std::mt19937_64& rng) {
 std::size_t payload_bytes(const GraphRecord& e) {
   return e.name.size() + e.class_label.size() + e.error.size() + 8 * 3 + 1 + sizeof e.timings +
          4 * (e.nodes.size() + e.edges.size() + e.feature_points.size()) +
-         8 * (e.node_geometry.size() + e.node_attributes.size() + e.edge_attributes.size() +
-              e.skeleton_offset.size() + e.skeleton_points.size() + e.signature.size());
+         8 * (e.node_geometry.size() + e.node_attributes.size() + e.edge_attributes.size() + e.skeleton_offset.size() +
+              e.skeleton_points.size() + e.signature.size());
 }
 
 }  // namespace
@@ -78,9 +78,10 @@ int main(int argc, char** argv) {
   }
   std::printf("%lld entries of 20-50 nodes, %.1f MB of payload; file in %s\n", static_cast<long long>(kEntries),
               static_cast<double>(payload) / 1e6, folder.string().c_str());
-  std::printf("%-22s %12s %10s %10s %14s %12s\n", "checkpoint every", "entries/s", "MB/s", "ms/entry",
-              "ms/checkpoint", "file MB");
-  for (const std::int64_t interval : {std::int64_t{16}, std::int64_t{64}, std::int64_t{256}, std::int64_t{1024}, kEntries}) {
+  std::printf("%-22s %12s %10s %10s %14s %12s\n", "checkpoint every", "entries/s", "MB/s", "ms/entry", "ms/checkpoint",
+              "file MB");
+  for (const std::int64_t interval :
+       {std::int64_t{16}, std::int64_t{64}, std::int64_t{256}, std::int64_t{1024}, kEntries}) {
     Timer timer;
     double checkpoint_ms = 0;
     std::int64_t checkpoints = 0;

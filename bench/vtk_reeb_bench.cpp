@@ -61,7 +61,8 @@ long long cycles(vtkReebGraph* graph) {
   std::vector<vtkIdType> parent(static_cast<std::size_t>(graph->GetNumberOfVertices()));
   std::iota(parent.begin(), parent.end(), 0);
   const auto find = [&](vtkIdType x) {
-    while (parent[static_cast<std::size_t>(x)] != x) x = parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
+    while (parent[static_cast<std::size_t>(x)] != x)
+      x = parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
     return x;
   };
   long long components = graph->GetNumberOfVertices();
@@ -125,8 +126,8 @@ void compare(const std::string& name, const Mesh& input) {
 }  // namespace
 
 int main() {
-  std::printf("%-24s %9s %9s %6s %6s %11s %9s %6s %6s\n", "mesh", "vertices", "reebkit_ms", "nodes", "cycles",
-              "vtk_ms", "ratio", "nodes", "cycles");
+  std::printf("%-24s %9s %9s %6s %6s %11s %9s %6s %6s\n", "mesh", "vertices", "reebkit_ms", "nodes", "cycles", "vtk_ms",
+              "ratio", "nodes", "cycles");
   const std::filesystem::path data = REEBKIT_UNPACKED_DATASETS;
   // Closed meshes with handles first (those Definition 6 loses cycles on
   // among them), then larger genus-0 ones.
@@ -136,7 +137,8 @@ int main() {
         "cgal_meshes/cheese.off", "shrec07_watertight/5.off", "shrec07_watertight/163.off",
         "shrec07_watertight/305.off", "cgal_meshes/bunny00.off"})
     if (std::filesystem::exists(data / file)) compare(file, load_mesh(data / file).components.front());
-  for (const int genus : {1, 2, 4, 8}) compare("holed plate genus " + std::to_string(genus), make_holed_plate(genus, 4));
+  for (const int genus : {1, 2, 4, 8})
+    compare("holed plate genus " + std::to_string(genus), make_holed_plate(genus, 4));
   for (const int levels : {4, 5, 6, 7}) {
     StarOptions star;
     star.arms = 6;

@@ -18,8 +18,9 @@ int main(int argc, char** argv) {
   }
   try {
     const reebkit::CollectionReader collection(argv[2]);
-    const reebkit::GraphRecord graph = reebkit::analyze_mesh_file(
-        argv[1], argv[1], reebkit::analysis_options_from(collection.provenance().analysis_options));
+    const reebkit::GraphRecord graph =
+        reebkit::analyze_mesh_file(argv[1], argv[1],
+                                   reebkit::analysis_options_from(collection.provenance().analysis_options));
     std::cout << "nodes " << graph.num_nodes() << " edges " << graph.num_edges() << " cycles "
               << reebkit::independent_cycles(graph) << " leaves " << reebkit::leaf_count(graph) << "\n";
     reebkit::QueryOptions options;

@@ -59,8 +59,8 @@ using reebkit::Vec3;
 using Histogram = std::vector<double>;
 
 constexpr int kBins = 64;
-constexpr int kD2Samples = 1024;     // 1024 points: 523,776 pairs
-constexpr double kD2Range = 4.0;     // D2 bins cover [0, 4 x mean distance); beyond goes to the last bin
+constexpr int kD2Samples = 1024;  // 1024 points: 523,776 pairs
+constexpr double kD2Range = 4.0;  // D2 bins cover [0, 4 x mean distance); beyond goes to the last bin
 constexpr int kGeodesicSources = 64;
 
 void add(Histogram& h, double x, double weight) {
@@ -127,7 +127,8 @@ double l1_distance(const Histogram& a, const Histogram& b) {
 reebkit::DistanceMatrix all_pairs(Index n, const std::function<double(std::size_t, std::size_t)>& distance) {
   reebkit::DistanceMatrix d(n, n);
   for (Index i = 0; i < n; ++i)
-    for (Index j = 0; j < n; ++j) d(i, j) = static_cast<float>(distance(static_cast<std::size_t>(i), static_cast<std::size_t>(j)));
+    for (Index j = 0; j < n; ++j)
+      d(i, j) = static_cast<float>(distance(static_cast<std::size_t>(i), static_cast<std::size_t>(j)));
   return d;
 }
 
@@ -189,10 +190,10 @@ int main(int argc, char** argv) {
       outcome[method].failed[k] = 1;
       outcome[method].failures.add(why);
     };
-    const std::array<std::function<void(const Mesh&, std::size_t)>, 3> describe = {
-        [&](const Mesh& mesh, std::size_t k) { d2_histograms[k] = d2(mesh); },
-        [&](const Mesh& mesh, std::size_t k) { geodesic_histograms[k] = geodesic(mesh); },
-        [&](const Mesh& mesh, std::size_t k) { spectra[k] = reebkit::shape_dna(mesh); }};
+    const std::array<std::function<void(const Mesh&, std::size_t)>, 3> describe =
+        {[&](const Mesh& mesh, std::size_t k) { d2_histograms[k] = d2(mesh); },
+         [&](const Mesh& mesh, std::size_t k) { geodesic_histograms[k] = geodesic(mesh); },
+         [&](const Mesh& mesh, std::size_t k) { spectra[k] = reebkit::shape_dna(mesh); }};
 #pragma omp parallel for schedule(dynamic)
     for (Index i = 0; i < n; ++i) {
       const auto k = static_cast<std::size_t>(i);
@@ -221,9 +222,10 @@ int main(int argc, char** argv) {
       return reebkit::shape_dna_distance(spectra[i], spectra[j]);
     };
     using Distance = std::function<double(std::size_t, std::size_t)>;
-    const std::array<std::pair<const char*, Distance>, 3> methods = {
-        std::pair{"d2", Distance(l1_of(d2_histograms))}, std::pair{"geodesic", Distance(l1_of(geodesic_histograms))},
-        std::pair{"shape-dna", Distance(shape_dna_of)}};
+    const std::array<std::pair<const char*, Distance>, 3> methods = {std::pair{"d2", Distance(l1_of(d2_histograms))},
+                                                                     std::pair{"geodesic",
+                                                                               Distance(l1_of(geodesic_histograms))},
+                                                                     std::pair{"shape-dna", Distance(shape_dna_of)}};
     int status = 0;
     for (std::size_t m = 0; m < methods.size(); ++m) {
       const auto& [method, distance] = methods[m];
@@ -237,7 +239,8 @@ int main(int argc, char** argv) {
       for (const double x : outcome[m].ms) total_ms += x;
       const auto described = static_cast<double>(files.size() - outcome[m].failures.size());
       std::cout << method << ": nearest neighbour " << nearest_neighbor_rate(d, label, class_size) << " over " << n
-                << " models (" << outcome[m].failures.size() << " failed: the largest float to every other), descriptor "
+                << " models (" << outcome[m].failures.size()
+                << " failed: the largest float to every other), descriptor "
                 << (described > 0 ? total_ms / described : 0.0) << " ms per mesh, wrote " << prefix << "-" << method
                 << ".matrix\n";
     }

@@ -51,7 +51,7 @@ constexpr int kMinChanges = 2, kMaxChanges = 4;
 
 struct Part {
   Index node;
-  bool limb;  ///< a component (else the torso region)
+  bool limb;     ///< a component (else the torso region)
   double share;  ///< of the surface area
 };
 
@@ -101,10 +101,12 @@ std::vector<Part> body_parts(const reebkit::ReebGraph& g) {
     if (in_limb[static_cast<std::size_t>(from)]) in_limb[static_cast<std::size_t>(to)] = 1;
   Index torso = reebkit::kInvalidIndex;
   for (std::size_t i = 0; i < n; ++i)
-    if (!in_limb[i] && (torso == reebkit::kInvalidIndex || g.nodes[i].area > g.nodes[static_cast<std::size_t>(torso)].area))
+    if (!in_limb[i] &&
+        (torso == reebkit::kInvalidIndex || g.nodes[i].area > g.nodes[static_cast<std::size_t>(torso)].area))
       torso = static_cast<Index>(i);
   std::reverse(parts.begin(), parts.end());
-  if (torso != reebkit::kInvalidIndex) parts.push_back({torso, false, g.nodes[static_cast<std::size_t>(torso)].area / total});
+  if (torso != reebkit::kInvalidIndex)
+    parts.push_back({torso, false, g.nodes[static_cast<std::size_t>(torso)].area / total});
   return parts;
 }
 
@@ -128,8 +130,8 @@ struct Factors {
   double low = 1.05, high = 1.15;
 };
 
-std::vector<Person> draw_people(int people, int poses, std::size_t pose_count, std::size_t part_count,
-                                Factors factors, std::uint64_t seed, const std::vector<Part>& parts) {
+std::vector<Person> draw_people(int people, int poses, std::size_t pose_count, std::size_t part_count, Factors factors,
+                                std::uint64_t seed, const std::vector<Part>& parts) {
   std::mt19937_64 rng(seed);
   std::uniform_int_distribution<int> changes(kMinChanges, std::min<int>(kMaxChanges, static_cast<int>(part_count)));
   std::uniform_real_distribution<double> factor(factors.low, factors.high);
@@ -178,13 +180,12 @@ reebkit::ProportionPlan original_vertices_only(reebkit::ProportionPlan plan, Ind
 
 reebkit::Mesh load(const fs::path& path) { return std::move(reebkit::load_mesh(path).components.front()); }
 
-int run(const fs::path& tosca, const fs::path& out, const std::string& shape, int people, int poses,
-        Factors factors, std::uint64_t seed, fs::path cla) {
+int run(const fs::path& tosca, const fs::path& out, const std::string& shape, int people, int poses, Factors factors,
+        std::uint64_t seed, fs::path cla) {
   const std::vector<fs::path> files = pose_files(tosca, shape);
   if (files.empty()) throw reebkit::Error(tosca.string() + ": no " + shape + "<number>.off");
   if (people < 1 || poses < 1 || poses > static_cast<int>(files.size()))
-    throw reebkit::InvalidArgument("--people must be >= 1 and --poses in [1, " +
-                                   std::to_string(files.size()) + "]");
+    throw reebkit::InvalidArgument("--people must be >= 1 and --poses in [1, " + std::to_string(files.size()) + "]");
   if (!(factors.low > 0.0 && factors.low <= factors.high && std::isfinite(factors.high)))
     throw reebkit::InvalidArgument("--factors LOW:HIGH needs 0 < LOW <= HIGH");
   fs::create_directories(out);
@@ -226,8 +227,7 @@ int run(const fs::path& tosca, const fs::path& out, const std::string& shape, in
 
   std::ofstream text(out / "people.txt");
   text << "# body_shapes " << tosca.string() << " (" << shape << ", factors " << factors.low << ":" << factors.high
-       << ", seed " << seed << "): parts planned on "
-       << files.front().filename().string() << "\n";
+       << ", seed " << seed << "): parts planned on " << files.front().filename().string() << "\n";
   for (std::size_t i = 0; i < parts.size(); ++i) {
     const reebkit::ReebNode& node = reference.reeb.nodes[static_cast<std::size_t>(parts[i].node)];
     text << "# part " << i << ": " << (parts[i].limb ? "limb, component of node " : "torso, region of node ")
@@ -247,7 +247,8 @@ int run(const fs::path& tosca, const fs::path& out, const std::string& shape, in
     }
     text << "\n";
   }
-  std::ofstream(cla) << "PSB 1\n" << persons.size() << " " << persons.size() * static_cast<std::size_t>(poses) << "\n"
+  std::ofstream(cla) << "PSB 1\n"
+                     << persons.size() << " " << persons.size() * static_cast<std::size_t>(poses) << "\n"
                      << blocks.str();
   if (!text) throw reebkit::Error((out / "people.txt").string() + ": cannot write");
   std::cerr << "body_shapes: " << persons.size() * static_cast<std::size_t>(poses) << " meshes in " << out.string()
@@ -265,8 +266,8 @@ int main(int argc, char** argv) {
     return 2;
   };
   if (args.size() < 2 || args.size() % 2 != 0) return usage();
-  std::map<std::string, std::string> options{{"--shape", "michael"}, {"--people", "10"}, {"--poses", "10"},
-                                             {"--factors", "1.05:1.15"}, {"--seed", "1"}, {"--cla", ""}};
+  std::map<std::string, std::string> options{{"--shape", "michael"},     {"--people", "10"}, {"--poses", "10"},
+                                             {"--factors", "1.05:1.15"}, {"--seed", "1"},    {"--cla", ""}};
   for (std::size_t i = 2; i < args.size(); i += 2) {
     if (!options.count(args[i])) return usage();
     options[args[i]] = args[i + 1];

@@ -2,10 +2,10 @@
 // Markdown table: per class the min / median / max count and every count.
 //
 //   build/experiments/feature_counts ../shared/.../shrec07_watertight.cla MESH_DIR > results/shrec07_feature_counts.md
+#include "batch_failures.h"
 #include "reebkit/core/timer.h"
 #include "reebkit/features/feature_points.h"
 #include "reebkit/io/psb_classes.h"
-#include "batch_failures.h"
 #include "reebkit/mesh/load_mesh.h"
 
 #include <algorithm>

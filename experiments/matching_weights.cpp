@@ -150,8 +150,9 @@ Choice choose_among(const std::vector<Options>& settings, const std::vector<cons
 }
 
 int usage() {
-  std::fprintf(stderr, "usage: matching_weights --choose A.h5 [B.h5 ...] [--report C.h5 ...] [--guard G.h5]\n"
-                       "(collections indexed with --classes)\n");
+  std::fprintf(stderr,
+               "usage: matching_weights --choose A.h5 [B.h5 ...] [--report C.h5 ...] [--guard G.h5]\n"
+               "(collections indexed with --classes)\n");
   return 2;
 }
 
@@ -161,11 +162,16 @@ int main(int argc, char** argv) {
   std::vector<std::string> choose_paths, report_paths, guard_paths;
   std::vector<std::string>* list = nullptr;
   for (int i = 1; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--choose")) list = &choose_paths;
-    else if (!std::strcmp(argv[i], "--report")) list = &report_paths;
-    else if (!std::strcmp(argv[i], "--guard")) list = &guard_paths;
-    else if (list) list->push_back(argv[i]);
-    else return usage();
+    if (!std::strcmp(argv[i], "--choose"))
+      list = &choose_paths;
+    else if (!std::strcmp(argv[i], "--report"))
+      list = &report_paths;
+    else if (!std::strcmp(argv[i], "--guard"))
+      list = &guard_paths;
+    else if (list)
+      list->push_back(argv[i]);
+    else
+      return usage();
   }
   if (choose_paths.empty() || guard_paths.size() > 1) return usage();
   try {
@@ -184,8 +190,9 @@ int main(int argc, char** argv) {
     };
     const Options defaults;
 
-    std::printf("# Graph matching weights: chosen on some collections, reported on others\n\n`build/experiments/"
-                "matching_weights");
+    std::printf(
+        "# Graph matching weights: chosen on some collections, reported on others\n\n`build/experiments/"
+        "matching_weights");
     for (int i = 1; i < argc; ++i) std::printf(" %s", argv[i]);
     std::printf("`. Choosing:");
     for (const Benchmark& b : choose) std::printf(" %s (%zu graphs)", b.name.c_str(), b.entries.size());
@@ -194,10 +201,11 @@ int main(int argc, char** argv) {
     if (guard) std::printf("; guard: %s (%zu graphs)", guard->name.c_str(), guard->entries.size());
     std::printf(". NN, FT, DCG: the PSB measures of `reeb eval` (micro averages) on the all-pairs distances.\n\n");
 
-    std::printf("## One factor at a time\n\nEach row changes the defaults (attribute %g, structure %g, edge %g, %s, "
-                "global geodesic %g, min node weight %g, %d refinement rounds) as stated.\n\n%s",
-                defaults.attribute_weight, defaults.structure_weight, defaults.edge_weight, describe(defaults).c_str(),
-                defaults.global_geodesic_weight, defaults.min_node_weight, defaults.refine_rounds, header(all).c_str());
+    std::printf(
+        "## One factor at a time\n\nEach row changes the defaults (attribute %g, structure %g, edge %g, %s, "
+        "global geodesic %g, min node weight %g, %d refinement rounds) as stated.\n\n%s",
+        defaults.attribute_weight, defaults.structure_weight, defaults.edge_weight, describe(defaults).c_str(),
+        defaults.global_geodesic_weight, defaults.min_node_weight, defaults.refine_rounds, header(all).c_str());
     const std::vector<Setting> factors = {
         {"**defaults**", [](Options&) {}},
         {"the previous defaults (layout 5): shape 2, global D2 1.6, profile 32, no spectra, no global geodesic, "
@@ -267,9 +275,9 @@ int main(int argc, char** argv) {
     const std::size_t chosen = first.chosen;
     const auto rank_sum = [&](std::size_t k) { return first.rank_sum[k]; };
     const std::string guard_text =
-        guard ? " among the " + std::to_string(std::count(kept.begin(), kept.end(), 1)) + " settings that keep NN and FT on " +
-                    guard->name + " at least at the current defaults' (" + std::to_string(floor->nn).substr(0, 5) + ", " +
-                    std::to_string(floor->ft).substr(0, 5) + ")"
+        guard ? " among the " + std::to_string(std::count(kept.begin(), kept.end(), 1)) +
+                    " settings that keep NN and FT on " + guard->name + " at least at the current defaults' (" +
+                    std::to_string(floor->nn).substr(0, 5) + ", " + std::to_string(floor->ft).substr(0, 5) + ")"
               : "";
 
     std::printf(
@@ -295,13 +303,15 @@ int main(int argc, char** argv) {
       for (const double attribute : {4.0, 8.0})
         for (const double global_geodesic : {0.0, 0.8}) {
           Options o = grid[chosen];
-          o.min_node_weight = min_node_weight, o.attribute_weight = attribute, o.global_geodesic_weight = global_geodesic;
+          o.min_node_weight = min_node_weight, o.attribute_weight = attribute,
+          o.global_geodesic_weight = global_geodesic;
           around.push_back(o);
         }
     const Choice second = choose_among(around, choosing, guard, floor);
-    std::printf("\nAround the grid's choice: min node weight 0.01, 0.05 x attribute 4, 8 x global geodesic 0, 0.8, "
-                "chosen the same way among these %zu settings (**bold**: the choice, MatchingOptions' default).\n\n%s",
-                around.size(), header(all).c_str());
+    std::printf(
+        "\nAround the grid's choice: min node weight 0.01, 0.05 x attribute 4, 8 x global geodesic 0, 0.8, "
+        "chosen the same way among these %zu settings (**bold**: the choice, MatchingOptions' default).\n\n%s",
+        around.size(), header(all).c_str());
     for (std::size_t k = 0; k < around.size(); ++k) {
       char text[120];
       std::snprintf(text, sizeof text, "min node weight %g, attribute %g, global geodesic %g%s",
@@ -312,7 +322,8 @@ int main(int argc, char** argv) {
 
     std::vector<std::size_t> order(grid.size());
     for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return rank_sum(x) < rank_sum(y); });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t x, std::size_t y) { return rank_sum(x) < rank_sum(y); });
     std::printf("\nThe ten grid settings with the smallest rank sums, on the choosing collections:\n\n%s",
                 header(choosing).c_str());
     for (std::size_t k = 0; k < std::min<std::size_t>(10, order.size()); ++k)

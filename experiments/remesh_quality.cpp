@@ -65,7 +65,8 @@ int main(int argc, char** argv) {
         const Mesh mesh = std::move(load_mesh(files[d.file]).components.front());
         RemeshOptions options = defaults;
         options.seed = d.seed;
-        options.target_vertices = static_cast<Index>(std::max(4.0, std::round(std::min(max_vertices, d.factor * mesh.num_vertices()))));
+        options.target_vertices =
+            static_cast<Index>(std::max(4.0, std::round(std::min(max_vertices, d.factor * mesh.num_vertices()))));
         const Mesh out = remesh(mesh, options).mesh;
         double largest = 0;
         for (Index t = 0; t < out.num_triangles(); ++t) largest = std::max(largest, triangle_area(out, t));
@@ -78,8 +79,8 @@ int main(int argc, char** argv) {
         variants_with_defect += zero + small > 0;
         if (zero + small > 0) {
 #pragma omp critical
-          std::cout << files[d.file].filename().string() << " seed " << d.seed << " target "
-                    << options.target_vertices << ": " << zero << " zero-area, " << small << " degenerate\n";
+          std::cout << files[d.file].filename().string() << " seed " << d.seed << " target " << options.target_vertices
+                    << ": " << zero << " zero-area, " << small << " degenerate\n";
         }
       } catch (const std::exception& e) {
         ++failed;

@@ -92,7 +92,8 @@ double share_within(const MeshGraph& graph, const std::vector<Index>& points, co
   if (points.empty()) return 1.0;
   if (others.empty()) return 0.0;
   const DistanceField d = fast_marching(graph, others, GeodesicOptions{radius});
-  const auto near = std::count_if(points.begin(), points.end(), [&](Index v) { return d.distance[static_cast<std::size_t>(v)] <= radius; });
+  const auto near = std::count_if(points.begin(), points.end(),
+                                  [&](Index v) { return d.distance[static_cast<std::size_t>(v)] <= radius; });
   return static_cast<double>(near) / static_cast<double>(points.size());
 }
 
@@ -117,10 +118,11 @@ struct SamplingPerturbation {
 };
 
 const std::vector<SamplingPerturbation>& perturbations() {
-  static const std::vector<SamplingPerturbation> all = {
-      {"decimate", 0.75}, {"decimate", 0.5},    {"decimate", 0.25}, {"remesh", 0.5},   {"remesh", 1.0},
-      {"remesh", 2.0},    {"subdivide", 1},     {"noise", 0.001},   {"noise", 0.0025}, {"noise", 0.005},
-      {"noise", 0.01},    {"pose", 1},          {"pose", 2}};
+  static const std::vector<SamplingPerturbation> all = {{"decimate", 0.75}, {"decimate", 0.5}, {"decimate", 0.25},
+                                                        {"remesh", 0.5},    {"remesh", 1.0},   {"remesh", 2.0},
+                                                        {"subdivide", 1},   {"noise", 0.001},  {"noise", 0.0025},
+                                                        {"noise", 0.005},   {"noise", 0.01},   {"pose", 1},
+                                                        {"pose", 2}};
   return all;
 }
 
@@ -129,8 +131,11 @@ const std::vector<SamplingPerturbation>& perturbations() {
 /// as a share of the mesh's).
 MeshVariant perturb(const Mesh& mesh, const MeshAnalysis& analysis, const SamplingPerturbation& p) {
   using K = PerturbationKind;
-  const K kind = p.kind == "decimate" ? K::Decimate : p.kind == "remesh" ? K::Remesh
-                 : p.kind == "subdivide" ? K::Subdivide : p.kind == "noise" ? K::Noise : K::Pose;
+  const K kind = p.kind == "decimate"    ? K::Decimate
+                 : p.kind == "remesh"    ? K::Remesh
+                 : p.kind == "subdivide" ? K::Subdivide
+                 : p.kind == "noise"     ? K::Noise
+                                         : K::Pose;
   reebkit::Perturbation step{kind, p.strength, {}, kind == K::Pose ? static_cast<std::uint64_t>(p.strength) : 1};
   step.remesh.target_vertices = static_cast<Index>(std::lround(p.strength * mesh.num_vertices()));
   return perturb_mesh(mesh, step, &analysis);
@@ -179,7 +184,8 @@ std::vector<VariantRow> sample_mesh(const std::string& name, const Mesh& mesh, s
       try {
         if (!error.empty()) throw Error(error);
         const Analysed b = analyse(variant.mesh, kMethods[m]);
-        const std::vector<Index> features = surface_features(a), mapped = mapped_features(b.analysis, variant.original_vertex);
+        const std::vector<Index> features = surface_features(a),
+                                 mapped = mapped_features(b.analysis, variant.original_vertex);
         const double radius = kEpsilon * a.features.diameter;
         row.vertices = mesh.num_vertices();
         row.variant_vertices = variant.mesh.num_vertices();
@@ -238,24 +244,24 @@ int write_sampling(const fs::path& out, const std::vector<std::pair<std::string,
       }
       char line[512];
       std::snprintf(line, sizeof line, "%s,%s,%s,%g,%d,%d,%zu,%zu,%.4f,%.4f,%d,%d,%d,%d,%d,%d,%.6g,%d,%.3f\n",
-                    row.mesh.c_str(), geodesic_name(row.method), row.perturbation.kind.c_str(), row.perturbation.strength,
-                    row.vertices, row.variant_vertices, row.features, row.variant_features, row.forward, row.backward,
-                    row.nodes, row.variant_nodes, row.leaves, row.variant_leaves, row.cycles, row.variant_cycles,
-                    row.distance, row.rank, row.seconds);
+                    row.mesh.c_str(), geodesic_name(row.method), row.perturbation.kind.c_str(),
+                    row.perturbation.strength, row.vertices, row.variant_vertices, row.features, row.variant_features,
+                    row.forward, row.backward, row.nodes, row.variant_nodes, row.leaves, row.variant_leaves, row.cycles,
+                    row.variant_cycles, row.distance, row.rank, row.seconds);
       csv << line;
     }
   if (!csv) throw Error(out.string() + ": cannot write the table");
   return failures.finish(meshes.size());
 }
 
-std::vector<std::pair<std::string, fs::path>> shrec_models(const fs::path& dir, const fs::path& cla, std::size_t per_class) {
+std::vector<std::pair<std::string, fs::path>> shrec_models(const fs::path& dir, const fs::path& cla,
+                                                           std::size_t per_class) {
   std::vector<std::pair<std::string, fs::path>> out;
   for (const PsbClass& c : read_psb_classes(cla))
     for (std::size_t i = 0; i < std::min(per_class, c.models.size()); ++i)
       out.emplace_back(c.name + "/" + c.models[i], dir / (c.models[i] + ".off"));
   return out;
 }
-
 
 /// Section 1 (rigid + scale), 4 (classes) and 5 (hand-picked points) on every SHREC07 mesh.
 int rigid(const fs::path& out, const fs::path& dir, const fs::path& cla, int similarities) {
@@ -291,12 +297,15 @@ int rigid(const fs::path& out, const fs::path& dir, const fs::path& cla, int sim
         }
         const FeaturePoints &fa = a.analysis.features, &fb = b.analysis.features;
         char line[256];
-        std::snprintf(line, sizeof line, "%s,%d,%.6f,%d,%d,%zu,%zu,%zu,%zu,%d,%d,%d,%.3g\n", name.c_str(), s, similarity.scale,
-                      sorted({fa.source1, fa.source2}) == sorted({fb.source1, fb.source2}) ? 1 : 0,
+        std::snprintf(line, sizeof line, "%s,%d,%.6f,%d,%d,%zu,%zu,%zu,%zu,%d,%d,%d,%.3g\n", name.c_str(), s,
+                      similarity.scale, sorted({fa.source1, fa.source2}) == sorted({fb.source1, fb.source2}) ? 1 : 0,
                       sorted(fa.extrema1) == sorted(fb.extrema1) && sorted(fa.extrema2) == sorted(fb.extrema2) ? 1 : 0,
                       fa.extrema1.size(), fb.extrema1.size(), fa.extrema2.size(), fb.extrema2.size(),
                       sorted(b.analysis.features.vertices) == sorted(a.analysis.features.vertices) ? 1 : 0,
-                      b.analysis.reeb.edges == a.analysis.reeb.edges && b.analysis.reeb.vertex_node == a.analysis.reeb.vertex_node ? 1 : 0,
+                      b.analysis.reeb.edges == a.analysis.reeb.edges &&
+                              b.analysis.reeb.vertex_node == a.analysis.reeb.vertex_node
+                          ? 1
+                          : 0,
                       same_shape ? 1 : 0, same_shape ? attribute : -1.0);
         rows += line;
       }
@@ -412,8 +421,8 @@ int tosca(const fs::path& out, const fs::path& dir) {
       for (std::size_t j = i + 1; j < inputs.size(); ++j)
         pairs << inputs[i].path.stem().string() << "," << inputs[j].path.stem().string() << ","
               << pose_class(inputs[i].path.stem().string()) << "," << pose_class(inputs[j].path.stem().string()) << ","
-              << geodesic_name(kMethods[m]) << "," << match_graphs(analysed[i][m].record, analysed[j][m].record).distance
-              << "\n";
+              << geodesic_name(kMethods[m]) << ","
+              << match_graphs(analysed[i][m].record, analysed[j][m].record).distance << "\n";
   if (!poses || !pairs) throw Error(out.string() + ": cannot write the TOSCA tables");
   return failures.finish(all.size());
 }
@@ -427,16 +436,19 @@ void timing(const fs::path& out, const fs::path& path, const std::vector<Index>&
   for (const Index target : faces) {
     Mesh sized = mesh;
     while (sized.num_triangles() < target) sized = subdivide_mesh(sized, 1).mesh;
-    sized = decimate_mesh(sized, DecimationOptions{std::min(1.0, static_cast<double>(target) / sized.num_triangles()), 0.02}).mesh;
+    sized = decimate_mesh(sized,
+                          DecimationOptions{std::min(1.0, static_cast<double>(target) / sized.num_triangles()), 0.02})
+                .mesh;
     for (const Geodesic method : kMethods) {
       std::vector<AnalysisTimings> runs;
       for (int run = 0; run < 3; ++run) runs.push_back(analyze_mesh(sized, options_for(method)).timings);
-      std::sort(runs.begin(), runs.end(), [](const AnalysisTimings& a, const AnalysisTimings& b) { return a.total() < b.total(); });
+      std::sort(runs.begin(), runs.end(),
+                [](const AnalysisTimings& a, const AnalysisTimings& b) { return a.total() < b.total(); });
       const AnalysisTimings& t = runs[1];
       char line[256];
-      std::snprintf(line, sizeof line, "%s,%d,%d,%d,%s,%.2f,%.2f,%.2f,%.2f,%.2f\n", path.stem().string().c_str(), target,
-                    sized.num_triangles(), sized.num_vertices(), geodesic_name(method), t.graph, t.features, t.quotient,
-                    t.reeb, t.total());
+      std::snprintf(line, sizeof line, "%s,%d,%d,%d,%s,%.2f,%.2f,%.2f,%.2f,%.2f\n", path.stem().string().c_str(),
+                    target, sized.num_triangles(), sized.num_vertices(), geodesic_name(method), t.graph, t.features,
+                    t.quotient, t.reeb, t.total());
       csv << line;
     }
   }

@@ -3,8 +3,8 @@
 // class is the file name without its trailing digits (TOSCA: cat0 ... cat10).
 //
 //   build/experiments/signature_stability build/data/tosca_dev > results/signature_stability.md
-#include "reebkit/collection/mesh_inputs.h"
 #include "batch_failures.h"
+#include "reebkit/collection/mesh_inputs.h"
 #include "reebkit/mesh/load_mesh.h"
 #include "reebkit/pipeline/analyze_mesh.h"
 
@@ -72,12 +72,13 @@ int main(int argc, char** argv) {
       }
       c[4] += samples[nearest].label == samples[i].label;
     }
-    std::printf("# Graph signature: within-class vs between-class distances\n\n"
-                "`build/experiments/signature_stability %s` (L2 distance between the %d-entry signatures; "
-                "class = file name without trailing digits).\n\n"
-                "| class | meshes | mean distance within | mean distance to other classes | nearest neighbour in class |\n"
-                "|---|---:|---:|---:|---:|\n",
-                argv[1], reebkit::kSignatureLength);
+    std::printf(
+        "# Graph signature: within-class vs between-class distances\n\n"
+        "`build/experiments/signature_stability %s` (L2 distance between the %d-entry signatures; "
+        "class = file name without trailing digits).\n\n"
+        "| class | meshes | mean distance within | mean distance to other classes | nearest neighbour in class |\n"
+        "|---|---:|---:|---:|---:|\n",
+        argv[1], reebkit::kSignatureLength);
     double hits = 0;
     for (const auto& [label, c] : per_class) {
       std::printf("| %s | %d | %.3f | %.3f | %d of %d |\n", label.c_str(), sizes[label], c[1] != 0 ? c[0] / c[1] : 0.0,

@@ -4,9 +4,9 @@
 // the (leaves, cycles) pairs of its holed and closed poses compare.
 //
 //   build/experiments/tosca_graphs /tmp/data/tosca_dev > results/tosca_graphs.md
+#include "batch_failures.h"
 #include "reebkit/collection/mesh_inputs.h"
 #include "reebkit/core/timer.h"
-#include "batch_failures.h"
 #include "reebkit/mesh/load_mesh.h"
 #include "reebkit/mesh/mesh_topology.h"
 #include "reebkit/pipeline/analyze_mesh.h"
@@ -35,18 +35,17 @@ struct GraphCounts {
 GraphCounts count(const reebkit::MeshAnalysis& a) {
   GraphCounts c;
   c.features = a.features.vertices.size();
-  c.features_on_new_vertices = static_cast<std::size_t>(std::count_if(
-      a.features.vertices.begin(), a.features.vertices.end(),
-      [&](Index v) { return a.mesh.source_index(v) == reebkit::kInvalidIndex; }));
+  c.features_on_new_vertices =
+      static_cast<std::size_t>(std::count_if(a.features.vertices.begin(), a.features.vertices.end(), [&](Index v) {
+        return a.mesh.source_index(v) == reebkit::kInvalidIndex;
+      }));
   c.nodes = a.reeb.num_nodes();
   c.leaves = a.reeb.leaf_count();
   c.cycles = a.reeb.independent_cycles();
   return c;
 }
 
-std::string leaves_cycles(const GraphCounts& c) {
-  return std::to_string(c.leaves) + "/" + std::to_string(c.cycles);
-}
+std::string leaves_cycles(const GraphCounts& c) { return std::to_string(c.leaves) + "/" + std::to_string(c.cycles); }
 
 /// `closed` without its triangles whose three vertices lie on the boundary
 /// of `holed` (same vertex numbering, as within a TOSCA class): the holes of
@@ -56,7 +55,9 @@ std::string leaves_cycles(const GraphCounts& c) {
 /// holed pose's.
 reebkit::Mesh punched(const reebkit::Mesh& closed, const reebkit::Mesh& holed) {
   const reebkit::MeshGraph graph = reebkit::build_mesh_graph(holed);
-  const auto on_boundary = [&](Index v) { return graph.ring[static_cast<std::size_t>(v)] != reebkit::RingKind::Closed; };
+  const auto on_boundary = [&](Index v) {
+    return graph.ring[static_cast<std::size_t>(v)] != reebkit::RingKind::Closed;
+  };
   reebkit::Mesh out = closed;
   Index n = 0;
   for (Index t = 0; t < closed.num_triangles(); ++t)
@@ -87,8 +88,10 @@ std::string tally(const std::vector<std::string>& items) {
   std::vector<std::pair<std::string, int>> counts;
   for (const auto& s : items) {
     auto it = std::find_if(counts.begin(), counts.end(), [&](const auto& c) { return c.first == s; });
-    if (it == counts.end()) counts.emplace_back(s, 1);
-    else ++it->second;
+    if (it == counts.end())
+      counts.emplace_back(s, 1);
+    else
+      ++it->second;
   }
   std::string out;
   for (const auto& [s, n] : counts) out += (out.empty() ? "" : ", ") + s + (n > 1 ? " x" + std::to_string(n) : "");
@@ -151,14 +154,15 @@ int main(int argc, char** argv) {
           holed_filled.push_back(leaves_cycles(r.filled));
         }
       }
-      std::cout << "| " << name << " | " << tally(closed) << " | " << tally(holed_open) << " | "
-                << tally(holed_filled) << " |\n";
+      std::cout << "| " << name << " | " << tally(closed) << " | " << tally(holed_open) << " | " << tally(holed_filled)
+                << " |\n";
     }
     std::cout << "\nFeature points at a vertex added by fill_holes, over all meshes: " << new_vertex_features << "\n";
 
     std::cout << "\nThe same pose with and without holes: each closed pose with the holes of the first holed pose "
                  "of its class punched in (its missing triangles removed), as loaded and filled.\n\n"
-              << "| closed pose | holes of | boundary edges / loops punched | features | L/C | features punched | L/C punched | features filled | "
+              << "| closed pose | holes of | boundary edges / loops punched | features | L/C | features punched | L/C "
+                 "punched | features filled | "
                  "L/C filled |\n|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const auto& [name, rows] : classes) {
       const auto holed = std::find_if(rows.begin(), rows.end(), [](const Row& r) { return r.loops > 0; });
@@ -177,9 +181,9 @@ int main(int argc, char** argv) {
           continue;
         }
         std::cout << "| " << r.name << " | " << holed->name << " | " << topology.boundary_edges << " / "
-                  << topology.boundary_loops << " | " << r.open.features << " | "
-                  << leaves_cycles(r.open) << " | " << open.features << " | " << leaves_cycles(open) << " | "
-                  << filled.features << " | " << leaves_cycles(filled) << " |\n";
+                  << topology.boundary_loops << " | " << r.open.features << " | " << leaves_cycles(r.open) << " | "
+                  << open.features << " | " << leaves_cycles(open) << " | " << filled.features << " | "
+                  << leaves_cycles(filled) << " |\n";
       }
     }
     std::cerr << "tosca_graphs: " << timer.lap() / 1000.0 << " s\n";

@@ -31,9 +31,10 @@ constexpr Reader kReader = Reader::REEBKIT_FUZZ_READER;
 /// The readers of file paths read the input from a file of their own in the
 /// temporary folder (one per fuzzing process).
 std::filesystem::path input_file(std::string_view bytes, const char* extension) {
-  static const std::filesystem::path path = std::filesystem::temp_directory_path() /
-                                            ("reebkit-fuzz-" + std::to_string(::getpid()) + extension);
-  std::ofstream(path, std::ios::binary | std::ios::trunc).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  static const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / ("reebkit-fuzz-" + std::to_string(::getpid()) + extension);
+  std::ofstream(path, std::ios::binary | std::ios::trunc)
+      .write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   return path;
 }
 

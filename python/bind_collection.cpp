@@ -76,8 +76,8 @@ void refuse_other_analysis(const Collection& c, const ArrayGraph& graph) {
   std::string list;
   for (const OptionDifference& d : differences)
     list += (list.empty() ? "" : ", ") + d.name + " " + d.first + " (the collection: " + d.second + ")";
-  throw py::value_error("the query graph was analysed with other options than the entries of " + c.path + ": " +
-                        list + "; analyse it with **collection.analysis_options, or query the mesh itself");
+  throw py::value_error("the query graph was analysed with other options than the entries of " + c.path + ": " + list +
+                        "; analyse it with **collection.analysis_options, or query the mesh itself");
 }
 
 py::dict scores(const RetrievalScores& s) {
@@ -227,7 +227,8 @@ void bind_collection(py::module_& m) {
       [](const py::array_t<float, py::array::c_style | py::array::forcecast>& matrix, const py::object& classes) {
         if (matrix.ndim() != 2) throw py::value_error("matrix must be an (N, N) array");
         const ModelClasses model = classes_of(classes);
-        const DistanceMatrix distances = Eigen::Map<const DistanceMatrix>(matrix.data(), matrix.shape(0), matrix.shape(1));
+        const DistanceMatrix distances =
+            Eigen::Map<const DistanceMatrix>(matrix.data(), matrix.shape(0), matrix.shape(1));
         RetrievalEvaluation e;
         {
           const py::gil_scoped_release release;

@@ -67,12 +67,15 @@ void bind_graph(py::module_& m) {
                          "An attributed high-level Reeb graph (attributes/graph_record.h): from reeb_graph(V, F) "
                          "or an entry of a Collection. Arrays are read-only views of the graph (no copy). Vertex "
                          "ids are rows of V (-1: a vertex added to close a hole).")
-      .def_property_readonly("name", [](const ArrayGraph& g) { return g.record.name; },
-                             "the mesh's name in its collection ('' for reeb_graph)")
-      .def_property_readonly("class_label", [](const ArrayGraph& g) { return g.record.class_label; },
-                             "its class in the collection ('' when none)")
-      .def_property_readonly("ok", [](const ArrayGraph& g) { return g.record.ok; },
-                             "False for a collection entry that failed (see error): no graph")
+      .def_property_readonly(
+          "name", [](const ArrayGraph& g) { return g.record.name; },
+          "the mesh's name in its collection ('' for reeb_graph)")
+      .def_property_readonly(
+          "class_label", [](const ArrayGraph& g) { return g.record.class_label; },
+          "its class in the collection ('' when none)")
+      .def_property_readonly(
+          "ok", [](const ArrayGraph& g) { return g.record.ok; },
+          "False for a collection entry that failed (see error): no graph")
       .def_property_readonly("error", [](const ArrayGraph& g) { return g.record.error; })
       .def_property_readonly("num_nodes", [](const ArrayGraph& g) { return g.record.num_nodes(); })
       .def_property_readonly(
@@ -108,12 +111,10 @@ void bind_graph(py::module_& m) {
           },
           "(e, 2) float64: the edge attributes, columns EDGE_ATTRIBUTES")
       .def_property_readonly(
-          "signature",
-          [](py::object self) { return vector_view(record_of(self).signature, self); },
+          "signature", [](py::object self) { return vector_view(record_of(self).signature, self); },
           "(48,) float64: the fixed-length signature of the query pre-filter, entries SIGNATURE")
       .def_property_readonly(
-          "feature_points",
-          [](py::object self) { return vector_view(record_of(self).feature_points, self); },
+          "feature_points", [](py::object self) { return vector_view(record_of(self).feature_points, self); },
           "(p,) int32: the feature points (vertex ids), in selection order")
       .def_property_readonly(
           "skeleton",
@@ -129,17 +130,16 @@ void bind_graph(py::module_& m) {
           },
           "list of (s_i, 3) float64 arrays: each node's part of the topological skeleton")
       .def_property_readonly(
-          "vertex_node",
-          [](py::object self) { return per_vertex(&ArrayGraph::vertex_node, self); },
+          "vertex_node", [](py::object self) { return per_vertex(&ArrayGraph::vertex_node, self); },
           "(n,) int32: the node of each vertex (the segmentation), -1 for a vertex left out by cleaning; "
           "None for a collection entry")
       .def_property_readonly(
-          "fq",
-          [](py::object self) { return per_vertex(&ArrayGraph::fq, self); },
+          "fq", [](py::object self) { return per_vertex(&ArrayGraph::fq, self); },
           "(n,) float64: the quotient function f_q the graph was built from, NaN for a vertex left out; None for "
           "a collection entry")
-      .def_property_readonly("cycles", [](const ArrayGraph& g) { return independent_cycles(g.record); },
-                             "independent cycles (first Betti number) of the graph")
+      .def_property_readonly(
+          "cycles", [](const ArrayGraph& g) { return independent_cycles(g.record); },
+          "independent cycles (first Betti number) of the graph")
       .def_property_readonly("leaves", [](const ArrayGraph& g) { return leaf_count(g.record); })
       .def(
           "to_networkx",
@@ -154,16 +154,15 @@ void bind_graph(py::module_& m) {
               data["end"] = node_type_name(static_cast<NodeType>(r.nodes[n * kNodeColumnCount + kNodeEnd]));
               graph.attr("add_node")(n, **data);
             }
-            for (std::int32_t e = 0; e < r.num_edges(); ++e)
-              graph.attr("add_edge")(r.edges[2 * e], r.edges[2 * e + 1]);
+            for (std::int32_t e = 0; e < r.num_edges(); ++e) graph.attr("add_edge")(r.edges[2 * e], r.edges[2 * e + 1]);
             return graph;
           },
           "The graph as a networkx.Graph (needs networkx): nodes 0..k-1 with the entries of `nodes` as "
           "attributes (type and end by name).")
       .def("__repr__", [](const ArrayGraph& g) {
         return "<reebkit.ReebGraph " + (g.record.name.empty() ? std::string() : "'" + g.record.name + "' ") +
-               std::to_string(g.record.num_nodes()) + " nodes, " + std::to_string(g.record.num_edges()) +
-               " edges, " + std::to_string(independent_cycles(g.record)) + " cycles>";
+               std::to_string(g.record.num_nodes()) + " nodes, " + std::to_string(g.record.num_edges()) + " edges, " +
+               std::to_string(independent_cycles(g.record)) + " cycles>";
       });
   m.attr("NODE_ATTRIBUTES") = names(kNodeAttributeNames);
   m.attr("EDGE_ATTRIBUTES") = names(kEdgeAttributeNames);

@@ -30,8 +30,8 @@ std::pair<ArrayMesh, MeshAnalysis> features_and_fq(const PointsArray& V, const I
 }  // namespace
 
 void bind_mesh(py::module_& m) {
-  const std::string options_doc = "\n\nAnalysis options (keyword arguments; defaults as the command line's):\n" +
-                                  analysis_options_doc();
+  const std::string options_doc =
+      "\n\nAnalysis options (keyword arguments; defaults as the command line's):\n" + analysis_options_doc();
 
   m.def(
       "load_mesh",
@@ -43,7 +43,8 @@ void bind_mesh(py::module_& m) {
         }
         warn(cleaned.report.warnings);
         Mesh& mesh = cleaned.components.front();
-        const auto n = static_cast<py::ssize_t>(mesh.num_vertices()), f = static_cast<py::ssize_t>(mesh.num_triangles());
+        const auto n = static_cast<py::ssize_t>(mesh.num_vertices()),
+                   f = static_cast<py::ssize_t>(mesh.num_triangles());
         return py::make_tuple(owning_array(std::move(mesh.vertices), {n, 3}),
                               owning_array(std::move(mesh.triangles), {f, 3}));
       },
@@ -67,7 +68,8 @@ void bind_mesh(py::module_& m) {
       ("features(V, F, **options) -> (p,) int32\n\n"
        "The feature points of the mesh (section 4.1.2, eqs. 1-6; `reeb features`), as rows of V in selection "
        "order; -1 for a vertex added to close a hole. V: (n, 3) float64, F: (m, 3) int32." +
-       options_doc).c_str());
+       options_doc)
+          .c_str());
 
   m.def(
       "quotient_function",
@@ -81,7 +83,8 @@ void bind_mesh(py::module_& m) {
       ("quotient_function(V, F, **options) -> (n,) float64\n\n"
        "f_q = 1 - normalized geodesic distance to the nearest feature point (eqs. 7-8), in [0, 1]; NaN for a "
        "vertex left out by cleaning. V: (n, 3) float64, F: (m, 3) int32." +
-       options_doc).c_str());
+       options_doc)
+          .c_str());
 
   m.def(
       "geodesic_distance",
@@ -120,11 +123,11 @@ void bind_mesh(py::module_& m) {
        "The attributed high-level Reeb graph of the mesh (section 4.2; what `reeb graph` writes): nodes, "
        "edges, segmentation (vertex_node), f_q, skeleton, feature points, attributes. V: (n, 3) float64, F: "
        "(m, 3) int32." +
-       options_doc).c_str());
+       options_doc)
+          .c_str());
 
   m.def(
-      "analysis_options",
-      [] { return options_dict(AnalysisOptions{}); },
+      "analysis_options", [] { return options_dict(AnalysisOptions{}); },
       "analysis_options() -> dict: every analysis option with its default (pipeline/analysis_options.h).");
 }
 

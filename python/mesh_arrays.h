@@ -50,9 +50,10 @@ std::vector<Index> from_input_numbering(const ArrayMesh& m, const std::vector<In
 /// The Reeb graph of an array mesh: what `reeb graph` computes, with the
 /// per-vertex arrays in the caller's numbering.
 struct ArrayGraph {
-  GraphRecord record;              ///< vertex ids are rows of V (-1: a vertex added to close a hole)
-  std::vector<Index> vertex_node;  ///< #V rows: node of each vertex, -1 where the mesh left it out; empty for a collection entry
-  std::vector<double> fq;          ///< #V rows: f_q, NaN where left out; empty for a collection entry
+  GraphRecord record;  ///< vertex ids are rows of V (-1: a vertex added to close a hole)
+  std::vector<Index>
+      vertex_node;  ///< #V rows: node of each vertex, -1 where the mesh left it out; empty for a collection entry
+  std::vector<double> fq;  ///< #V rows: f_q, NaN where left out; empty for a collection entry
   /// The options it was analysed with (a collection entry: the collection's);
   /// none for a graph of unknown origin.
   std::optional<AnalysisOptions> analysis;

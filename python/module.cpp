@@ -46,8 +46,8 @@ std::string analysis_options_doc() {
   for (const AnalysisOptionField& field : analysis_option_fields()) {
     const OptionValue value = field.get(defaults);
     const std::string text = option_text(value);
-    doc += "    " + field.name + "=" + (std::holds_alternative<std::string>(value) ? "'" + text + "'" : text) +
-           ": " + field.help + "\n";
+    doc += "    " + field.name + "=" + (std::holds_alternative<std::string>(value) ? "'" + text + "'" : text) + ": " +
+           field.help + "\n";
   }
   return doc;
 }

@@ -4,18 +4,18 @@
 #include "reebkit/deform/deformation.h"
 #include "reebkit/deform/proportions.h"
 #include "reebkit/matching/graph_matching.h"
-#include "reebkit/pipeline/mesh_record.h"
 #include "reebkit/mesh/load_mesh.h"
 #include "reebkit/mesh/shapes.h"
 #include "reebkit/mesh/transform.h"
+#include "reebkit/pipeline/mesh_record.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <iostream>
-#include <cmath>
 #include <numeric>
 #include <random>
 #include <set>
@@ -76,14 +76,15 @@ const std::vector<Case>& cases() {
   return all;
 }
 
-
 TEST(GraphAttributes, NamesAreDistinctSnakeCase) {
   std::set<std::string> seen;
   const auto check = [&](const char* name) {
     ASSERT_NE(name, nullptr);
     const std::string s(name);
     EXPECT_FALSE(s.empty());
-    EXPECT_TRUE(std::all_of(s.begin(), s.end(), [](char ch) { return (ch >= 'a' && ch <= 'z') || (ch >= '0' && ch <= '9') || ch == '_'; })) << s;
+    EXPECT_TRUE(std::all_of(s.begin(), s.end(), [](char ch) {
+      return (ch >= 'a' && ch <= 'z') || (ch >= '0' && ch <= '9') || ch == '_';
+    })) << s;
     EXPECT_TRUE(seen.insert(s).second) << s;
   };
   for (const char* name : kNodeAttributeNames) check(name);
@@ -121,9 +122,8 @@ TEST(GraphAttributes, ColumnsAgreeWithTheGraphAndSumToOne) {
       EXPECT_EQ(node_value(g, n, kNodeFqSpan), node.fq_max - node.fq_min);
       EXPECT_EQ(node_value(g, n, kNodeStartType), static_cast<double>(node.type));
       EXPECT_EQ(node_value(g, n, kNodeEndType), static_cast<double>(node.end));
-      const double degree = static_cast<double>(std::count_if(reeb.edges.begin(), reeb.edges.end(), [&](const auto& e) {
-        return e[0] == n || e[1] == n;
-      }));
+      const double degree = static_cast<double>(
+          std::count_if(reeb.edges.begin(), reeb.edges.end(), [&](const auto& e) { return e[0] == n || e[1] == n; }));
       EXPECT_EQ(node_value(g, n, kNodeDegree), degree);
       EXPECT_GE(node_value(g, n, kNodeGeodesicExtent), 0.0);
       EXPECT_GE(node_value(g, n, kNodeMeanRadius), 0.0);
@@ -134,7 +134,8 @@ TEST(GraphAttributes, ColumnsAgreeWithTheGraphAndSumToOne) {
       // each incident triangle), relative to the surface as read.
       if (surface.num_vertices() == a.mesh.num_vertices()) {
         EXPECT_NEAR(node_value(g, n, kNodeRelativeArea), node.area / area, 1e-12) << "node " << n;
-        EXPECT_DOUBLE_EQ(node_value(g, n, kNodeVertexShare), node.vertex_count / static_cast<double>(a.mesh.num_vertices()));
+        EXPECT_DOUBLE_EQ(node_value(g, n, kNodeVertexShare),
+                         node.vertex_count / static_cast<double>(a.mesh.num_vertices()));
       }
     }
     EXPECT_NEAR(area_sum, 1.0, 1e-10);
@@ -153,8 +154,10 @@ TEST(GraphAttributes, ColumnsAgreeWithTheGraphAndSumToOne) {
     for (int b = 0; b < 6; ++b) histogram += signature_value(g, "area_hist_" + std::to_string(b));
     EXPECT_NEAR(histogram, 1.0, 1e-12);
     for (int k = 0; k + 1 < 6; ++k) {
-      EXPECT_GE(signature_value(g, "leaf_area_" + std::to_string(k)), signature_value(g, "leaf_area_" + std::to_string(k + 1)));
-      EXPECT_GE(signature_value(g, "leaf_extent_" + std::to_string(k)), signature_value(g, "leaf_extent_" + std::to_string(k + 1)));
+      EXPECT_GE(signature_value(g, "leaf_area_" + std::to_string(k)),
+                signature_value(g, "leaf_area_" + std::to_string(k + 1)));
+      EXPECT_GE(signature_value(g, "leaf_extent_" + std::to_string(k)),
+                signature_value(g, "leaf_extent_" + std::to_string(k + 1)));
     }
   }
 }
@@ -207,7 +210,8 @@ TEST(GraphAttributes, CapsuleLevelLinesAndBordersAreTheTubeRings) {
     EXPECT_NEAR(node_value(g, n, kNodeMeanRadius) * unit, ring / (2 * kPi), 0.01 * ring / (2 * kPi)) << "leaf " << n;
     // The profile's 8 levels all lie on the tube (the cap is 1/31 of the leaf).
     for (int k = 0; k < kRadiusProfileLevels; ++k)
-      EXPECT_NEAR(node_value(g, n, NodeAttribute(kNodeRadiusProfile + k)) * unit, ring / (2 * kPi), 0.01 * ring / (2 * kPi))
+      EXPECT_NEAR(node_value(g, n, NodeAttribute(kNodeRadiusProfile + k)) * unit, ring / (2 * kPi),
+                  0.01 * ring / (2 * kPi))
           << "leaf " << n << " level " << k;
     // From the root's ring to the pole, half the pole-to-pole diameter up to a ring spacing.
     EXPECT_NEAR(node_value(g, n, kNodeGeodesicExtent), 0.5, 0.01) << "leaf " << n;
@@ -269,7 +273,8 @@ void expect_same_attributes(const GraphAttributes& g, const GraphAttributes& ref
     return columns(x.node, kNodeAttributeCount, kNodeSpectrum, kNodeSpectrum + kRegionSpectrumLength, spectra);
   };
   const auto signature = [](const GraphAttributes& x, bool spectra) {
-    return columns(x.signature, kSignatureLength, kSigGlobalSpectrum, kSigGlobalSpectrum + kGlobalSpectrumLength, spectra);
+    return columns(x.signature, kSignatureLength, kSigGlobalSpectrum, kSigGlobalSpectrum + kGlobalSpectrumLength,
+                   spectra);
   };
   EXPECT_LE(max_relative_difference(node(g, false), node(reference, false)), relative);
   EXPECT_LE(max_relative_difference(g.edge, reference.edge), relative);
@@ -327,7 +332,8 @@ TEST(GraphAttributes, CapsuleMainAxisRunsFromPoleToPole) {
   }
   EXPECT_NEAR(position_sum, 0.5, 1e-12);
   EXPECT_NEAR(offset_sum, 0.5, 1e-12);
-  std::cout << "capsule: mean axis position " << position_mean / 0.5 << ", mean axis offset " << offset_mean / 0.5 << "\n";
+  std::cout << "capsule: mean axis position " << position_mean / 0.5 << ", mean axis offset " << offset_mean / 0.5
+            << "\n";
   EXPECT_NEAR(position_mean / 0.5, 0.5, 0.02);
   // Offsets within the first bin (below 1/16 of the diameter), whose centre
   // the histogram's mean counts them at.
@@ -343,7 +349,8 @@ TEST(GraphAttributes, CapsuleMainAxisRunsFromPoleToPole) {
 TEST(GraphAttributes, GlobalShapeDistributionOfASphereHasTheAnalyticMean) {
   const GraphAttributes g = compute_attributes(analyze_mesh(make_icosphere(4)));
   double mean = 0.0;
-  for (int k = 0; k < kGlobalShapeBins; ++k) mean += g.signature[static_cast<std::size_t>(kSigGlobalShape + k)] * 0.15 * (k + 0.5);
+  for (int k = 0; k < kGlobalShapeBins; ++k)
+    mean += g.signature[static_cast<std::size_t>(kSigGlobalShape + k)] * 0.15 * (k + 0.5);
   EXPECT_NEAR(mean, 4.0 / 3.0 / std::sqrt(4.0 * kPi), 0.015);
 }
 
@@ -398,7 +405,8 @@ std::vector<Index> match_nodes(const ReebGraph& a, const ReebGraph& b) {
     std::vector<Index> overlap(b.nodes.size(), 0);
     for (std::size_t v = 0; v < a.vertex_node.size(); ++v)
       if (a.vertex_node[v] == n) ++overlap[static_cast<std::size_t>(b.vertex_node[v])];
-    match[static_cast<std::size_t>(n)] = static_cast<Index>(std::max_element(overlap.begin(), overlap.end()) - overlap.begin());
+    match[static_cast<std::size_t>(n)] =
+        static_cast<Index>(std::max_element(overlap.begin(), overlap.end()) - overlap.begin());
   }
   return match;
 }
@@ -422,7 +430,7 @@ TEST(GraphAttributes, DeformedPoseChangesAttributesLittle) {
     ASSERT_EQ(posed.reeb.nodes[static_cast<std::size_t>(m)].end, NodeType::Termination);
     for (const NodeAttribute column : {kNodeRelativeArea, kNodeFqSpan, kNodeGeodesicExtent, kNodeMeanRadius}) {
       worst_leaf = std::max(worst_leaf, std::abs(node_value(after, m, column) - node_value(before, n, column)) /
-                                             node_value(before, n, column));
+                                            node_value(before, n, column));
     }
   }
   // The geometric part of the signature (everything before the spectrum).
@@ -435,7 +443,7 @@ TEST(GraphAttributes, DeformedPoseChangesAttributesLittle) {
     worst_signature = std::max(worst_signature, std::abs(after.signature[k] - before.signature[k]));
   std::cout << "posed star: largest relative change of a leaf attribute " << worst_leaf
             << ", of a geometric signature entry " << worst_signature << "\n";
-  EXPECT_LE(worst_leaf, 0.05);  // measured 0.032 (extent of the turned arm)
+  EXPECT_LE(worst_leaf, 0.05);       // measured 0.032 (extent of the turned arm)
   EXPECT_LE(worst_signature, 0.01);  // measured 0.005
 }
 
@@ -477,7 +485,8 @@ TEST(GraphAttributes, GeodesicAttributesIgnoreAPoseChangeThatMovesTheEuclideanOn
       const Index m = posed.reeb.vertex_node[static_cast<std::size_t>(a.features.vertices[k])];
       ASSERT_EQ(a.reeb.nodes[static_cast<std::size_t>(n)].end, NodeType::Termination);
       ASSERT_EQ(posed.reeb.nodes[static_cast<std::size_t>(m)].end, NodeType::Termination);
-      const double moved = half_l1(row(before, n, kNodeGeodesicHistogram), row(after, m, kNodeGeodesicHistogram), kShapeBins);
+      const double moved =
+          half_l1(row(before, n, kNodeGeodesicHistogram), row(after, m, kNodeGeodesicHistogram), kShapeBins);
       geodesic = std::max(geodesic, moved);
       if (n != turn.node) continue;
       turned_geodesic = moved;
@@ -486,8 +495,8 @@ TEST(GraphAttributes, GeodesicAttributesIgnoreAPoseChangeThatMovesTheEuclideanOn
     ASSERT_GE(turned_d2, 0.0) << "the turned leaf was not found";
     const double global_geodesic = half_l1(before.signature.data() + kSigGlobalGeodesic,
                                            after.signature.data() + kSigGlobalGeodesic, kGlobalShapeBins);
-    const double global_d2 = half_l1(before.signature.data() + kSigGlobalShape,
-                                     after.signature.data() + kSigGlobalShape, kGlobalShapeBins);
+    const double global_d2 =
+        half_l1(before.signature.data() + kSigGlobalShape, after.signature.data() + kSigGlobalShape, kGlobalShapeBins);
     std::cout << cases()[c].name << ", a leaf turned by 60 degrees: its geodesic histogram moves by " << turned_geodesic
               << " (half L1), its Euclidean D2 by " << turned_d2 << "; every leaf's geodesic histogram by at most "
               << geodesic << "; the whole surface's geodesic histogram by " << global_geodesic << ", its D2 by "
@@ -600,8 +609,9 @@ TEST(GraphAttributes, SpectraIgnoreABendAndSeeALongerArm) {
   const auto [bent_arm, bent_whole] = spectra(bent);
   const auto [longer_arm, longer_whole] = spectra(longer);
   std::cout << "largest change of the arm's spectrum: " << max_difference(bent_arm, arm) << " bent, "
-            << max_difference(longer_arm, arm) << " 10 % longer; of the whole surface's: "
-            << max_difference(bent_whole, whole) << " bent, " << max_difference(longer_whole, whole) << " longer\n";
+            << max_difference(longer_arm, arm)
+            << " 10 % longer; of the whole surface's: " << max_difference(bent_whole, whole) << " bent, "
+            << max_difference(longer_whole, whole) << " longer\n";
   EXPECT_GT(max_difference(longer_arm, arm), 0.01);
   EXPECT_LT(3 * max_difference(bent_arm, arm), max_difference(longer_arm, arm));
   EXPECT_LT(2 * max_difference(bent_whole, whole), max_difference(longer_whole, whole));

@@ -30,7 +30,8 @@ std::vector<double> sphere_eigenvalues(int count) {
 
 std::vector<Index> labels_by_height(const Mesh& mesh, double level = 0.0) {
   std::vector<Index> label(static_cast<std::size_t>(mesh.num_vertices()));
-  for (Index v = 0; v < mesh.num_vertices(); ++v) label[static_cast<std::size_t>(v)] = mesh.vertices(v, 2) >= level ? 1 : 0;
+  for (Index v = 0; v < mesh.num_vertices(); ++v)
+    label[static_cast<std::size_t>(v)] = mesh.vertices(v, 2) >= level ? 1 : 0;
   return label;
 }
 
@@ -48,8 +49,10 @@ double largest_change_under_similarity(const Mesh& mesh, const std::vector<Index
     std::vector<Index> moved_label(label.size());
     for (std::size_t v = 0; v < label.size(); ++v) moved_label[static_cast<std::size_t>(order[v])] = label[v];
     const SurfaceSpectra after = surface_spectra(test::renumbered(moved, order), moved_label, regions);
-    for (std::size_t k = 0; k < before.global.size(); ++k) largest = std::max(largest, std::abs(after.global[k] - before.global[k]));
-    for (std::size_t k = 0; k < before.region.size(); ++k) largest = std::max(largest, std::abs(after.region[k] - before.region[k]));
+    for (std::size_t k = 0; k < before.global.size(); ++k)
+      largest = std::max(largest, std::abs(after.global[k] - before.global[k]));
+    for (std::size_t k = 0; k < before.region.size(); ++k)
+      largest = std::max(largest, std::abs(after.region[k] - before.region[k]));
   }
   return largest;
 }
@@ -61,11 +64,13 @@ TEST(RegionSpectra, SphereHasTheAnalyticSpectrum) {
   for (const int levels : {4, 5}) {
     SCOPED_TRACE(levels);
     const Mesh sphere = make_icosphere(levels, 3.0);  // any radius: area-normalized
-    const SurfaceSpectra s = surface_spectra(sphere, std::vector<Index>(static_cast<std::size_t>(sphere.num_vertices()), 0), 1);
+    const SurfaceSpectra s =
+        surface_spectra(sphere, std::vector<Index>(static_cast<std::size_t>(sphere.num_vertices()), 0), 1);
     ASSERT_EQ(s.global.size(), static_cast<std::size_t>(kGlobalSpectrumLength));
     const std::vector<double> exact = sphere_eigenvalues(kGlobalSpectrumLength);
     for (int k = 0; k < kGlobalSpectrumLength; ++k)
-      EXPECT_NEAR(unsquash(s.global[static_cast<std::size_t>(k)]) / (exact[static_cast<std::size_t>(k)] / (k + 1)), 1.0, 0.03)
+      EXPECT_NEAR(unsquash(s.global[static_cast<std::size_t>(k)]) / (exact[static_cast<std::size_t>(k)] / (k + 1)), 1.0,
+                  0.03)
           << "lambda_" << k + 1;
     // One region, the whole sphere: its spectrum is the global one's start
     // (its vertices renumbered, so decimated along other collapses).
@@ -85,7 +90,8 @@ TEST(RegionSpectra, HemispheresHaveTheNeumannSpectrum) {
   const double exact[kRegionSpectrumLength] = {2, 2, 6, 6, 6, 12};
   for (int r = 0; r < 2; ++r)
     for (int k = 0; k < kRegionSpectrumLength; ++k)
-      EXPECT_NEAR(unsquash(s.region[static_cast<std::size_t>(r * kRegionSpectrumLength + k)]) / (exact[k] / (2.0 * (k + 1))),
+      EXPECT_NEAR(unsquash(s.region[static_cast<std::size_t>(r * kRegionSpectrumLength + k)]) /
+                      (exact[k] / (2.0 * (k + 1))),
                   1.0, 0.05)
           << "region " << r << " lambda_" << k + 1;
 }
@@ -127,7 +133,8 @@ TEST(RegionSpectra, SmallRegionsGetZerosAndBadInputIsRefused) {
   // A surface of 8 vertices has no 16 eigenvalues to give: zeros, no error
   // (reeb index still indexes its graph).
   const Mesh cube = make_cube();
-  const SurfaceSpectra tiny = surface_spectra(cube, std::vector<Index>(static_cast<std::size_t>(cube.num_vertices()), 0), 1);
+  const SurfaceSpectra tiny =
+      surface_spectra(cube, std::vector<Index>(static_cast<std::size_t>(cube.num_vertices()), 0), 1);
   for (const double x : tiny.global) EXPECT_EQ(x, 0.0);
   EXPECT_THROW(surface_spectra(sphere, std::vector<Index>(3, 0), 1), InvalidArgument);
   EXPECT_THROW(surface_spectra(sphere, label, 1), InvalidArgument);  // label 1 outside [0, 1)

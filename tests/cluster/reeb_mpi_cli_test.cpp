@@ -52,9 +52,9 @@ class ReebMpiCli : public ::testing::Test {
     const auto [made, made_out] = run_command(kReeb + " variants " + shell_quoted(embedded_dataset_dir()) + " -o " +
                                               shell_quoted(meshes()) + " 2>&1");
     ASSERT_EQ(made, 0) << made_out;
-    const auto [indexed, out] = run_command(kReeb + " index " + shell_quoted(meshes()) + " --classes " +
-                                            shell_quoted(classes()) + " -o " + shell_quoted(single()) +
-                                            " --threads 2 2>&1");
+    const auto [indexed, out] =
+        run_command(kReeb + " index " + shell_quoted(meshes()) + " --classes " + shell_quoted(classes()) + " -o " +
+                    shell_quoted(single()) + " --threads 2 2>&1");
     ASSERT_EQ(indexed, 0) << out;
   }
   static void TearDownTestSuite() {
@@ -110,17 +110,16 @@ TEST_F(ReebMpiCli, TwoAndThreeProcessesWriteTheCollectionOneProcessWrites) {
     EXPECT_TRUE(distances_of(output, *dir_ / "many.matrix") == one_matrix);
   }
   // The comparison sees a difference: another input order is another file.
-  const auto [reversed, out] =
-      run_command(kReeb + " index " + shell_quoted(embedded_dataset_dir()) + " -o " + shell_quoted(*dir_ / "other.h5") +
-                  " --threads 2 2>&1");
+  const auto [reversed, out] = run_command(kReeb + " index " + shell_quoted(embedded_dataset_dir()) + " -o " +
+                                           shell_quoted(*dir_ / "other.h5") + " --threads 2 2>&1");
   ASSERT_EQ(reversed, 0) << out;
   EXPECT_EQ(compare_collections(single(), *dir_ / "other.h5").first, 1);
 }
 
 TEST_F(ReebMpiCli, DistancesOfTwoAndThreeProcessesAreBitIdenticalToOneProcess) {
-  const auto [status, out] = run_command(kReeb + " distances " + shell_quoted(single()) + " -o " +
-                                         shell_quoted(*dir_ / "d1.matrix") + " --ascii " +
-                                         shell_quoted(*dir_ / "d1.txt") + " 2>&1");
+  const auto [status, out] =
+      run_command(kReeb + " distances " + shell_quoted(single()) + " -o " + shell_quoted(*dir_ / "d1.matrix") +
+                  " --ascii " + shell_quoted(*dir_ / "d1.txt") + " 2>&1");
   ASSERT_EQ(status, 0) << out;
   const std::string one = file_bytes(*dir_ / "d1.matrix");
   ASSERT_EQ(one.size(), 48u * 48u * 4u);  // float32, no header
@@ -129,9 +128,9 @@ TEST_F(ReebMpiCli, DistancesOfTwoAndThreeProcessesAreBitIdenticalToOneProcess) {
     SCOPED_TRACE(std::to_string(processes) + " processes");
     const std::string matrix = "d" + std::to_string(processes) + ".matrix";
     const std::string ascii = "d" + std::to_string(processes) + ".txt";
-    const auto [many, many_out] = run_command(mpirun(processes) + kReeb + " distances " + shell_quoted(single()) +
-                                              " -o " + shell_quoted(*dir_ / matrix) + " --ascii " +
-                                              shell_quoted(*dir_ / ascii) + " 2>&1");
+    const auto [many, many_out] =
+        run_command(mpirun(processes) + kReeb + " distances " + shell_quoted(single()) + " -o " +
+                    shell_quoted(*dir_ / matrix) + " --ascii " + shell_quoted(*dir_ / ascii) + " 2>&1");
     ASSERT_EQ(many, 0) << many_out;
     EXPECT_TRUE(file_bytes(*dir_ / matrix) == one) << many_out;
     EXPECT_TRUE(file_bytes(*dir_ / ascii) == file_bytes(*dir_ / "d1.txt")) << many_out;
@@ -221,8 +220,7 @@ TEST_F(ReebMpiCli, ARefusedJobEndsEveryProcessWithOneMessage) {
   // Resuming with other analysis options: process 0 refuses, every process ends.
   const std::filesystem::path output = *dir_ / "refused.h5";
   std::filesystem::copy_file(single(), output);
-  const auto [status, out] =
-      run_command(mpirun(2) + index_command(output) + " --resume --epsilon 0.1 2>&1");
+  const auto [status, out] = run_command(mpirun(2) + index_command(output) + " --resume --epsilon 0.1 2>&1");
   EXPECT_EQ(status, 1) << out;
   EXPECT_NE(out.find("epsilon: 0.05 in the file, 0.1 now"), std::string::npos) << out;
   EXPECT_EQ(out.find("cannot resume"), out.rfind("cannot resume")) << out;
@@ -236,9 +234,8 @@ TEST_F(ReebMpiCli, ARefusedJobEndsEveryProcessWithOneMessage) {
 
 // Before: every process printed the error of the command line.
 TEST_F(ReebMpiCli, AnOptionErrorIsPrintedOnce) {
-  const auto [status, out] =
-      run_command(mpirun(2) + kReeb + " index " + shell_quoted(embedded_dataset_dir()) + " -o " +
-                  shell_quoted(*dir_ / "x.h5") + " --checkpoint-seconds -3 2>&1");
+  const auto [status, out] = run_command(mpirun(2) + kReeb + " index " + shell_quoted(embedded_dataset_dir()) + " -o " +
+                                         shell_quoted(*dir_ / "x.h5") + " --checkpoint-seconds -3 2>&1");
   EXPECT_NE(status, 0) << out;
   const std::string message = "reeb index: --checkpoint-seconds must be a number >= 0";
   ASSERT_NE(out.find(message), std::string::npos) << out;
@@ -252,8 +249,8 @@ TEST(ReebMpiShrec07, TwoProcessesWriteTheCollectionOneProcessWrites) {
   const auto [one, one_out] =
       run_command(kReeb + " index " + inputs + " -o " + shell_quoted(dir / "one.h5") + " --threads 2 2>&1");
   ASSERT_EQ(one, 0) << one_out;
-  const auto [two, two_out] = run_command(mpirun(2) + kReeb + " index " + inputs + " -o " +
-                                          shell_quoted(dir / "two.h5") + " --threads 1 2>&1");
+  const auto [two, two_out] =
+      run_command(mpirun(2) + kReeb + " index " + inputs + " -o " + shell_quoted(dir / "two.h5") + " --threads 1 2>&1");
   ASSERT_EQ(two, 0) << two_out;
   EXPECT_EQ(CollectionReader(dir / "two.h5").size(), 400);
   const auto [same, report] = compare_collections(dir / "one.h5", dir / "two.h5");

@@ -302,8 +302,8 @@ TEST(ExtractCollection, TheFileKeepsItsAnalysisOptionsAndClassesAndResumeRefuses
   {
     const CollectionReader reader(dir / "c.h5");
     const Provenance& provenance = reader.provenance();
-    EXPECT_TRUE(analysis_option_differences(analysis_options_from(provenance.analysis_options), options.analysis)
-                    .empty());
+    EXPECT_TRUE(
+        analysis_option_differences(analysis_options_from(provenance.analysis_options), options.analysis).empty());
     ASSERT_EQ(provenance.classes.size(), 2u);
     EXPECT_EQ(provenance.classes[0].models, classes[0].models);
     EXPECT_EQ(provenance.classes[1].models, classes[1].models);

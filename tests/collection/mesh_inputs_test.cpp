@@ -28,7 +28,7 @@ TEST(NaturalOrder, DigitRunsCompareByValue) {
   EXPECT_TRUE(natural_less("a2", "a10"));
   EXPECT_TRUE(natural_less("x1y2", "x1y10"));
   EXPECT_TRUE(natural_less("pose9", "pose10b"));
-  EXPECT_TRUE(natural_less("cat", "cat0"));      // a prefix first
+  EXPECT_TRUE(natural_less("cat", "cat0"));          // a prefix first
   EXPECT_TRUE(natural_less("cat.off", "cat0.off"));  // '.' before a digit, as in plain order
   EXPECT_TRUE(natural_less("b1", "c0"));
   EXPECT_TRUE(natural_less("a/9.off", "a/10.off"));
@@ -43,12 +43,13 @@ TEST(NaturalOrder, IsATotalOrderWithLeadingZerosTiedByPlainOrder) {
   EXPECT_FALSE(natural_less("a1", "a01"));
   EXPECT_TRUE(natural_less("a001", "a01"));
   EXPECT_TRUE(natural_less("a1", "a002"));
-  const std::vector<std::string> words = {"", "0", "00", "1", "01", "10", "a", "a0", "a00", "a1", "a01", "a10", "a1b",
-                                          "a01b", "a1c", "a2", "a10b", "b", "a.off", "a1.off", "a-1", "A1", "a/1", "~"};
+  const std::vector<std::string> words = {"",     "0",  "00",    "1",      "01",  "10",   "a",   "a0",
+                                          "a00",  "a1", "a01",   "a10",    "a1b", "a01b", "a1c", "a2",
+                                          "a10b", "b",  "a.off", "a1.off", "a-1", "A1",   "a/1", "~"};
   for (const std::string& x : words)
     for (const std::string& y : words) {
       EXPECT_NE(natural_less(x, y) || natural_less(y, x), x == y) << x << " " << y;  // total, irreflexive
-      EXPECT_FALSE(natural_less(x, y) && natural_less(y, x)) << x << " " << y;     // asymmetric
+      EXPECT_FALSE(natural_less(x, y) && natural_less(y, x)) << x << " " << y;       // asymmetric
       for (const std::string& z : words)
         EXPECT_FALSE(natural_less(x, y) && natural_less(y, z) && !natural_less(x, z)) << x << " " << y << " " << z;
     }
@@ -99,8 +100,9 @@ TEST(MeshInputs, MissingPathsAreAllNamedWithTheListLine) {
   const TempDir dir;
   touch(dir / "ok.off");
   std::ofstream(dir / "list.lst") << "ok.off\n# comment\ngone.off\n";
-  const std::string message =
-      thrown_message<InvalidArgument>([&] { list_mesh_inputs({(dir / "list.lst").string(), (dir / "nowhere").string()}); });
+  const std::string message = thrown_message<InvalidArgument>([&] {
+    list_mesh_inputs({(dir / "list.lst").string(), (dir / "nowhere").string()});
+  });
   EXPECT_NE(message.find("missing inputs"), std::string::npos) << message;
   EXPECT_NE(message.find((dir / "list.lst").string() + ":3: "), std::string::npos) << message;
   EXPECT_NE(message.find((dir / "nowhere").string()), std::string::npos) << message;
@@ -111,7 +113,9 @@ TEST(MeshInputs, DuplicateNamesAndUnknownKindsAreErrors) {
   touch(dir / "one/x.off");
   touch(dir / "two/x.off");
   touch(dir / "data.csv");
-  const std::string twice = thrown_message<InvalidArgument>([&] { list_mesh_inputs({(dir / "one").string(), (dir / "two").string()}); });
+  const std::string twice = thrown_message<InvalidArgument>([&] {
+    list_mesh_inputs({(dir / "one").string(), (dir / "two").string()});
+  });
   EXPECT_NE(twice.find("two meshes named 'x.off'"), std::string::npos) << twice;
   EXPECT_NE(twice.find((dir / "two" / "x.off").string()), std::string::npos) << twice;
   const std::string kind = thrown_message<InvalidArgument>([&] { list_mesh_inputs({(dir / "data.csv").string()}); });

@@ -43,17 +43,15 @@ TEST(ReebIndexCli, IndexInfoExportOnTheEmbeddedCollection) {
   const std::size_t meshes = list_mesh_inputs({datasets.string()}).size();
   ASSERT_GT(meshes, 0u);
 
-  const auto [indexed, index_out] =
-      run_command(reeb + " index " + shell_quoted(datasets) + " -o " + shell_quoted(dir / "c.h5") +
-                  " --threads 2 2>&1");
+  const auto [indexed, index_out] = run_command(reeb + " index " + shell_quoted(datasets) + " -o " +
+                                                shell_quoted(dir / "c.h5") + " --threads 2 2>&1");
   ASSERT_EQ(indexed, 0) << index_out;
   EXPECT_NE(index_out.find(std::to_string(meshes) + " meshes: " + std::to_string(meshes) + " ok, 0 failed"),
             std::string::npos)
       << index_out;
   // Progress into a pipe (as into a log file or CI): whole lines, no
   // carriage returns or terminal escapes, the last one at the last mesh.
-  EXPECT_NE(index_out.find("indexed " + std::to_string(meshes) + "/" + std::to_string(meshes) + " "),
-            std::string::npos)
+  EXPECT_NE(index_out.find("indexed " + std::to_string(meshes) + "/" + std::to_string(meshes) + " "), std::string::npos)
       << index_out;
   EXPECT_EQ(index_out.find('\r'), std::string::npos) << index_out;
   EXPECT_EQ(index_out.find('\033'), std::string::npos) << index_out;
@@ -71,9 +69,8 @@ TEST(ReebIndexCli, IndexInfoExportOnTheEmbeddedCollection) {
   EXPECT_NE(info.find(analysis + "\n"), std::string::npos) << info;
 
   // The same document from the collection and from the mesh (timings and path aside).
-  const auto [exported, export_out] =
-      run_command(reeb + " export " + shell_quoted(dir / "c.h5") + " elk.off --json -o " +
-                  shell_quoted(dir / "export.json") + " 2>&1");
+  const auto [exported, export_out] = run_command(reeb + " export " + shell_quoted(dir / "c.h5") +
+                                                  " elk.off --json -o " + shell_quoted(dir / "export.json") + " 2>&1");
   ASSERT_EQ(exported, 0) << export_out;
   const auto [graphed, graph_out] =
       run_command(reeb + " graph " + shell_quoted(datasets / "elk.off") + " -o " + shell_quoted(dir / "graph.json"));
@@ -234,8 +231,8 @@ TEST(ReebIndexCli, AFileSizeLimitIsAWriteErrorNotADeath) {
   const TempDir dir;
   const std::filesystem::path folder = mesh_folder(dir, {"elk.off", "eight.off", "cow.off"});
   const auto c = dir / "c.h5";
-  const auto [status, out] =
-      run_command(with_file_size_limit(kReeb + " index " + q(folder) + " -o " + q(c) + " --threads 1", 20000) + " 2>&1");
+  const auto [status, out] = run_command(
+      with_file_size_limit(kReeb + " index " + q(folder) + " -o " + q(c) + " --threads 1", 20000) + " 2>&1");
   EXPECT_EQ(status, 1) << out;
   EXPECT_TRUE(contains(out, {"reeb index: error: " + c.string() + ".partial: ", "File too large"})) << out;
   EXPECT_FALSE(std::filesystem::exists(dir / "c.h5.lock"));
@@ -308,10 +305,10 @@ TEST(ReebIndexCli, AFullDiskGivesOneClearErrorKeepsThePreviousFileAndResumeGoesO
   // The commands that read a collection and write files: the same (before:
   // distances and export -o reported the error but left partial files).
   write_bytes(dir / "out", "previous\n");
-  const std::vector<std::pair<std::string, int>> writers = {
-      {"distances " + q(c) + " -o " + q(dir / "out"), 50},  // the 5 x 5 float32 matrix: 100 bytes
-      {"distances " + q(c) + " -o " + q(dir / "d.matrix") + " --ascii " + q(dir / "out"), 100},
-      {"export " + q(c) + " elk.off --json -o " + q(dir / "out"), 100}};
+  const std::vector<std::pair<std::string, int>> writers =
+      {{"distances " + q(c) + " -o " + q(dir / "out"), 50},  // the 5 x 5 float32 matrix: 100 bytes
+       {"distances " + q(c) + " -o " + q(dir / "d.matrix") + " --ascii " + q(dir / "out"), 100},
+       {"export " + q(c) + " elk.off --json -o " + q(dir / "out"), 100}};
   for (const auto& [args, limit] : writers) {
     const auto [status, out] = run_command(with_file_size_limit(kReeb + " " + args, limit) + " 2>&1");
     EXPECT_EQ(status, 1) << args << "\n" << out;

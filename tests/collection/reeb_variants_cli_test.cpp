@@ -22,8 +22,8 @@ namespace {
 const char* const kSuffixes[] = {"", "_rotated", "_resampled", "_posed1", "_posed2", "_noisy"};
 
 int run_variants(const std::filesystem::path& in, const std::filesystem::path& out) {
-  const std::string command = std::string(REEB_BINARY) + " variants '" + in.string() + "' -o '" + out.string() +
-                              "' > /dev/null 2>&1";
+  const std::string command =
+      std::string(REEB_BINARY) + " variants '" + in.string() + "' -o '" + out.string() + "' > /dev/null 2>&1";
   return std::system(command.c_str());
 }
 

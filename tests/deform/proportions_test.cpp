@@ -63,7 +63,8 @@ double part_area(const MeshAnalysis& a, const Mesh& m, const ProportionPlan& pla
 TEST(Proportions, FactorsOfOneGiveTheSameMesh) {
   const MeshAnalysis& a = star_analysis();
   for (const ProportionPart part : {ProportionPart::Component, ProportionPart::Region}) {
-    const Mesh same = apply_proportions(a.mesh, plan_proportions(a, change(leaf_of_feature(a, 0), 1.0, 1.0, 0.25, part)));
+    const Mesh same =
+        apply_proportions(a.mesh, plan_proportions(a, change(leaf_of_feature(a, 0), 1.0, 1.0, 0.25, part)));
     EXPECT_EQ(same.vertices, a.mesh.vertices);
     EXPECT_EQ(same.triangles, a.mesh.triangles);
   }
@@ -173,8 +174,9 @@ TEST(Proportions, RegionStaysAttachedToTheRest) {
   Index moved = 0;
   for (Index v = 0; v < a.mesh.num_vertices(); ++v) {
     const bool root = a.reeb.vertex_node[static_cast<std::size_t>(v)] == 0;
-    const bool border = root && std::any_of(g.neighbor.begin() + g.offset[v], g.neighbor.begin() + g.offset[v + 1],
-                                            [&](Index n) { return a.reeb.vertex_node[static_cast<std::size_t>(n)] != 0; });
+    const bool border =
+        root && std::any_of(g.neighbor.begin() + g.offset[v], g.neighbor.begin() + g.offset[v + 1],
+                            [&](Index n) { return a.reeb.vertex_node[static_cast<std::size_t>(n)] != 0; });
     if (!root || border)
       EXPECT_EQ(row(wider, v), row(a.mesh, v)) << v;
     else if (row(wider, v) != row(a.mesh, v))

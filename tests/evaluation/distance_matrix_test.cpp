@@ -4,8 +4,8 @@
 
 #include "io/io_test_util.h"
 #include "reebkit/core/error.h"
-#include "support/test_support.h"
 #include "reebkit/io/file_bytes.h"
+#include "support/test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -17,7 +17,7 @@ namespace {
 
 DistanceMatrix awkward_matrix() {
   DistanceMatrix m(3, 3);
-  m << 0.0f, 0.1f, 1e-30f,  //
+  m << 0.0f, 0.1f, 1e-30f,   //
       3.4e38f, 0.0f, -2.5f,  //
       std::numeric_limits<float>::infinity(), 1.0f / 3.0f, 0.0f;
   return m;

@@ -60,8 +60,10 @@ TEST(LocalScaling, SymmetricScaleInvariantAndZerosStayZero) {
       for (Eigen::Index j = 0; j < d.cols(); ++j) {
         EXPECT_EQ(s(i, j), s(j, i));
         EXPECT_NEAR(scaled(i, j), s(i, j), 1e-5 * (1.0 + s(i, j))) << "k " << k;
-        if (d(i, j) == 0.0f) EXPECT_EQ(s(i, j), 0.0f);
-        else EXPECT_GT(s(i, j), 0.0f);
+        if (d(i, j) == 0.0f)
+          EXPECT_EQ(s(i, j), 0.0f);
+        else
+          EXPECT_GT(s(i, j), 0.0f);
       }
   }
 }

@@ -51,9 +51,7 @@ class ReebEvalCli : public ::testing::Test {
     write_shrec_matrix(dir_ / "perfect.txt", perfect);
   }
 
-  std::string reeb(const std::string& args) {
-    return std::string(REEB_BINARY) + " eval " + args;
-  }
+  std::string reeb(const std::string& args) { return std::string(REEB_BINARY) + " eval " + args; }
 
   TempDir dir_;
 };
@@ -71,8 +69,8 @@ TEST_F(ReebEvalCli, ReportsTheHandComputedMeasuresOfTwoMethods) {
   // DCG = (1/log2 4 + 1/log2 5 + 1/log2 6) / (1 + 1 + 1/log2 3).
   const double e_ant = 0.4, e_bird = 6.0 / 11.0;
   const double dcg_bird = (0.5 + 1 / std::log2(5.0) + 1 / std::log2(6.0)) / (2 + 1 / std::log2(3.0));
-  const std::string micro = row("ties", "micro (7 queries)", 3 / 7.0, 3 / 7.0, 1, (3 * e_ant + 4 * e_bird) / 7,
-                                (3 + 4 * dcg_bird) / 7);
+  const std::string micro =
+      row("ties", "micro (7 queries)", 3 / 7.0, 3 / 7.0, 1, (3 * e_ant + 4 * e_bird) / 7, (3 + 4 * dcg_bird) / 7);
   const std::string macro = row("ties", "macro (2 classes)", 0.5, 0.5, 1, (e_ant + e_bird) / 2, (1 + dcg_bird) / 2);
   const std::string oracle = row("oracle", "micro (7 queries)", 1, 1, 1, (3 * e_ant + 4 * e_bird) / 7, 1);
   EXPECT_TRUE(contains(printed, micro)) << micro << "\n" << printed;
@@ -127,10 +125,10 @@ TEST_F(ReebEvalCli, LocalScalingIsEvaluatedBesideTheMatrixAsRead) {
 
 TEST_F(ReebEvalCli, AMatrixOfTheWrongSizeIsAnErrorNamingTheFile) {
   write_psb_matrix(dir_ / "small.matrix", DistanceMatrix::Zero(4, 4));
-  const auto [status, printed] = run_captured(
-      reeb("'" + (dir_ / "small.matrix").string() + "' --cla '" + (dir_ / "toy.cla").string() + "' -o '" +
-           (dir_ / "r").string() + "' --no-plot"),
-      dir_ / "log.txt");
+  const auto [status, printed] =
+      run_captured(reeb("'" + (dir_ / "small.matrix").string() + "' --cla '" + (dir_ / "toy.cla").string() + "' -o '" +
+                        (dir_ / "r").string() + "' --no-plot"),
+                   dir_ / "log.txt");
   EXPECT_EQ(status, 1);
   EXPECT_TRUE(contains(printed, "small.matrix: 4 x 4 distances, but")) << printed;
   EXPECT_TRUE(contains(printed, "toy.cla lists 9 models")) << printed;
@@ -139,10 +137,10 @@ TEST_F(ReebEvalCli, AMatrixOfTheWrongSizeIsAnErrorNamingTheFile) {
 // Before: -o naming a file printed a raw "filesystem error".
 TEST_F(ReebEvalCli, AnOutputFolderThatIsAFileIsAnErrorNamingIt) {
   write_psb_matrix(dir_ / "small.matrix", DistanceMatrix::Zero(9, 9));
-  const auto [status, printed] = run_captured(
-      reeb("'" + (dir_ / "small.matrix").string() + "' --cla '" + (dir_ / "toy.cla").string() + "' -o '" +
-           (dir_ / "small.matrix").string() + "' --no-plot"),
-      dir_ / "log.txt");
+  const auto [status, printed] =
+      run_captured(reeb("'" + (dir_ / "small.matrix").string() + "' --cla '" + (dir_ / "toy.cla").string() + "' -o '" +
+                        (dir_ / "small.matrix").string() + "' --no-plot"),
+                   dir_ / "log.txt");
   EXPECT_EQ(status, 1);
   EXPECT_TRUE(contains(printed, "small.matrix: is a file, not a folder")) << printed;
   EXPECT_FALSE(contains(printed, "filesystem error")) << printed;

@@ -126,11 +126,12 @@ TEST(RetrievalMetrics, DiscountedCumulativeGainOnToyRankings) {
   // q0: hits at positions 2 and 5: 1/log2(2) + 1/log2(5); ideal (K = 2): 1 + 1/log2(2) = 2.
   EXPECT_NEAR(query(e, 0).scores.dcg, (1.0 + 1.0 / std::log2(5.0)) / 2.0, kTol);
   // q4: hits at 1, 3, 6: 1 + 1/log2(3) + 1/log2(6); ideal (K = 3): 1 + 1 + 1/log2(3).
-  EXPECT_NEAR(query(e, 4).scores.dcg, (1.0 + 1.0 / std::log2(3.0) + 1.0 / std::log2(6.0)) / (2.0 + 1.0 / std::log2(3.0)),
-              kTol);
+  EXPECT_NEAR(query(e, 4).scores.dcg,
+              (1.0 + 1.0 / std::log2(3.0) + 1.0 / std::log2(6.0)) / (2.0 + 1.0 / std::log2(3.0)), kTol);
   // q6: hits at 4, 5, 6.
   EXPECT_NEAR(query(e, 6).scores.dcg,
-              (1.0 / std::log2(4.0) + 1.0 / std::log2(5.0) + 1.0 / std::log2(6.0)) / (2.0 + 1.0 / std::log2(3.0)), kTol);
+              (1.0 / std::log2(4.0) + 1.0 / std::log2(5.0) + 1.0 / std::log2(6.0)) / (2.0 + 1.0 / std::log2(3.0)),
+              kTol);
   EXPECT_NEAR(query(e, 3).scores.dcg, 1.0, kTol);
 }
 
@@ -232,9 +233,9 @@ TEST(RetrievalMetrics, ReversedMatrixGivesTheWorstValues) {
 TEST(RetrievalMetrics, ClassesOfTwoOrFewerAreNoQueriesButStayInTheRankings) {
   // A = {0, 1, 2}, B = {3, 4, 5}, C = {6, 7}. q0 ranks the C models first:
   // they count as misses (NN = 0, FT = 0, ST = 2/2 with hits at 3 and 4).
-  const std::vector<std::vector<Index>> rankings = {
-      {6, 7, 1, 2, 3, 4, 5}, {0, 2, 3, 4, 5, 6, 7}, {0, 1, 3, 4, 5, 6, 7}, {4, 5, 0, 1, 2, 6, 7},
-      {3, 5, 0, 1, 2, 6, 7}, {3, 4, 0, 1, 2, 6, 7}, {7, 0, 1, 2, 3, 4, 5}, {6, 0, 1, 2, 3, 4, 5}};
+  const std::vector<std::vector<Index>> rankings = {{6, 7, 1, 2, 3, 4, 5}, {0, 2, 3, 4, 5, 6, 7}, {0, 1, 3, 4, 5, 6, 7},
+                                                    {4, 5, 0, 1, 2, 6, 7}, {3, 5, 0, 1, 2, 6, 7}, {3, 4, 0, 1, 2, 6, 7},
+                                                    {7, 0, 1, 2, 3, 4, 5}, {6, 0, 1, 2, 3, 4, 5}};
   const RetrievalEvaluation e = evaluate_retrieval(from_rankings(rankings), classes_of_sizes({3, 3, 2}));
   ASSERT_EQ(e.queries.size(), 6u);
   for (const QueryScores& q : e.queries) EXPECT_LT(q.model, 6);

@@ -76,7 +76,8 @@ TypeCounts count_types(const MeshGraph& g, const std::vector<double>& f) {
 TEST(CriticalPoints, IndicesSumToTheEulerCharacteristic) {
   // Morse-theory oracle: for any function on a closed surface, the indices of
   // its vertices sum to chi (2 for a sphere, 0 for a torus).
-  const std::vector<std::pair<Mesh, int>> cases = {{make_icosphere(3), 2}, {make_torus(30, 12), 0},
+  const std::vector<std::pair<Mesh, int>> cases = {{make_icosphere(3), 2},
+                                                   {make_torus(30, 12), 0},
                                                    {make_star(StarOptions{7, 3, 2.0, 0.3, 0.0}), 2}};
   for (const auto& [mesh, chi] : cases) {
     const MeshGraph g = build_mesh_graph(mesh);

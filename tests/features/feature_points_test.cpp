@@ -52,8 +52,8 @@ TEST_P(StarArms, OneFeaturePointPerArmTip) {
   const double radius = 0.05 * fp.diameter;
   for (const Index tip : arm_tips(mesh, options)) {
     const DistanceField d = dijkstra(g, tip);
-    const auto near = std::count_if(fp.vertices.begin(), fp.vertices.end(),
-                                    [&](Index f) { return d.distance[f] < radius; });
+    const auto near =
+        std::count_if(fp.vertices.begin(), fp.vertices.end(), [&](Index f) { return d.distance[f] < radius; });
     EXPECT_EQ(near, 1) << "tip " << tip;
   }
 }

@@ -48,8 +48,10 @@ TEST(Persistence, StripWithKnownProfile) {
   // (column 5) only at column 4 (1): persistence 3, not 2 (elder rule: its
   // component is older than column 3's). Column 7 meets at column 6 (0.5).
   ASSERT_EQ(p.maxima.size(), 4u);
-  const std::vector<std::tuple<Index, Index, double>> maxima = {
-      {top(1), top(4), 3.0}, {top(3), top(2), 1.0}, {top(5), kInvalidIndex, kInf}, {top(7), top(6), 2.0}};
+  const std::vector<std::tuple<Index, Index, double>> maxima = {{top(1), top(4), 3.0},
+                                                                {top(3), top(2), 1.0},
+                                                                {top(5), kInvalidIndex, kInf},
+                                                                {top(7), top(6), 2.0}};
   for (std::size_t k = 0; k < maxima.size(); ++k) {
     EXPECT_EQ(p.maxima[k].extremum, std::get<0>(maxima[k])) << k;
     EXPECT_EQ(p.maxima[k].saddle, std::get<1>(maxima[k])) << k;
@@ -215,7 +217,9 @@ TEST(Persistence, ExtremaAreThoseOfTheLinkClassification) {
     EXPECT_EQ(persistent_extrema(graph, f, 0.0), local_extrema(graph, f)) << what;
     // Every local extremum has persistence >= 0; one of each kind never dies.
     for (const auto* pairs : {&p.maxima, &p.minima}) {
-      EXPECT_EQ(std::count_if(pairs->begin(), pairs->end(), [](const PersistencePair& e) { return e.persistence == kInf; }), 1)
+      EXPECT_EQ(std::count_if(pairs->begin(), pairs->end(),
+                              [](const PersistencePair& e) { return e.persistence == kInf; }),
+                1)
           << what;
       for (const PersistencePair& e : *pairs) EXPECT_GE(e.persistence, 0.0) << what;
     }
@@ -229,8 +233,10 @@ TEST(Persistence, DistinctValuesGivePositivePersistence) {
     const std::vector<double> f = random_function(graph.num_vertices(), 11);
     const ExtremaPersistence p = extrema_persistence(graph, f);
     std::size_t local_maxima = 0;
-    for (Index v = 0; v < graph.num_vertices(); ++v) local_maxima += classify_vertex(graph, f, v) == CriticalType::Maximum;
-    EXPECT_EQ(std::count_if(p.maxima.begin(), p.maxima.end(), [](const PersistencePair& e) { return e.persistence > 0; }),
+    for (Index v = 0; v < graph.num_vertices(); ++v)
+      local_maxima += classify_vertex(graph, f, v) == CriticalType::Maximum;
+    EXPECT_EQ(std::count_if(p.maxima.begin(), p.maxima.end(),
+                            [](const PersistencePair& e) { return e.persistence > 0; }),
               static_cast<std::ptrdiff_t>(local_maxima))
         << name;
   }
@@ -327,7 +333,8 @@ TEST(Persistence, InvariantToSimilarityTransforms) {
       const MeshGraph graph = build_mesh_graph(transformed(mesh, t));
       const DistanceField field = geodesic_distances(graph, {source}, method);
       const ExtremaPersistence moved = extrema_persistence(graph, field.distance);
-      for (const auto& [got, want] : {std::pair{&moved.maxima, &reference.maxima}, std::pair{&moved.minima, &reference.minima}}) {
+      for (const auto& [got, want] :
+           {std::pair{&moved.maxima, &reference.maxima}, std::pair{&moved.minima, &reference.minima}}) {
         const auto significant = [](const std::vector<PersistencePair>& pairs, double diameter) {
           std::vector<std::tuple<Index, Index, double>> out;
           for (const PersistencePair& e : pairs)
@@ -348,7 +355,8 @@ TEST(Persistence, InvariantToSimilarityTransforms) {
         }
       }
       EXPECT_EQ(persistent_extrema(graph, field.distance, 0.02 * field.max_distance),
-                persistent_extrema(build_mesh_graph(mesh), reference_field.distance, 0.02 * reference_field.max_distance));
+                persistent_extrema(build_mesh_graph(mesh), reference_field.distance,
+                                   0.02 * reference_field.max_distance));
     }
   }
 }

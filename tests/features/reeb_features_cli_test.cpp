@@ -51,13 +51,13 @@ TEST(ReebFeaturesCli, MinPersistenceIsAnOption) {
   ASSERT_EQ(status, 0) << out;
   EXPECT_NE(out.find("6 feature points"), std::string::npos) << out;
   EXPECT_NE(read_text(dir / "f.json").find("\"min_persistence\": 0.05"), std::string::npos);
-  const auto [plain, plain_out] = run_command(reeb + " features " + shell_quoted(cow) + " -o " +
-                                              shell_quoted(dir / "g.json") + " 2>&1");
+  const auto [plain, plain_out] =
+      run_command(reeb + " features " + shell_quoted(cow) + " -o " + shell_quoted(dir / "g.json") + " 2>&1");
   ASSERT_EQ(plain, 0) << plain_out;
   EXPECT_NE(plain_out.find("10 feature points"), std::string::npos) << plain_out;
   EXPECT_NE(read_text(dir / "g.json").find("\"min_persistence\": 0.01"), std::string::npos);
-  const auto [paper, paper_out] =
-      run_command(reeb + " features " + shell_quoted(cow) + " --min-persistence 0 -o " + shell_quoted(dir / "p.json") + " 2>&1");
+  const auto [paper, paper_out] = run_command(reeb + " features " + shell_quoted(cow) + " --min-persistence 0 -o " +
+                                              shell_quoted(dir / "p.json") + " 2>&1");
   ASSERT_EQ(paper, 0) << paper_out;
   EXPECT_NE(paper_out.find("14 feature points"), std::string::npos) << paper_out;
   EXPECT_NE(read_text(dir / "p.json").find("\"min_persistence\": 0,"), std::string::npos);
@@ -68,8 +68,9 @@ TEST(ReebFeaturesCli, MinPersistenceIsAnOption) {
   EXPECT_NE(graph_out.find("2 cycles"), std::string::npos) << graph_out;  // genus 2
 
   // reeb index records it with the collection's analysis options.
-  const auto [indexed, index_out] = run_command(reeb + " index " + shell_quoted(cow) + " -o " +
-                                                shell_quoted(dir / "c.h5") + " --threads 1 --min-persistence 0.02 2>&1");
+  const auto [indexed, index_out] =
+      run_command(reeb + " index " + shell_quoted(cow) + " -o " + shell_quoted(dir / "c.h5") +
+                  " --threads 1 --min-persistence 0.02 2>&1");
   ASSERT_EQ(indexed, 0) << index_out;
   const auto [info_status, info] = run_command(reeb + " info " + shell_quoted(dir / "c.h5"));
   ASSERT_EQ(info_status, 0) << info;
@@ -103,20 +104,24 @@ TEST(ReebFeaturesCli, OutputsAreCheckedBeforeWorkAndWrittenWholeOrNotAtAll) {
   EXPECT_TRUE(contains(range_out, {"reeb graph: error: analysis option epsilon: 5 is out of its range (0, 1]"}))
       << range_out;
   EXPECT_EQ(range_out.find("read and cleaned"), std::string::npos) << range_out;
-  const auto [missing, missing_out] = run_command(reeb + " graph " + shell_quoted(dir / "elk.off") + " -o " +
-                                                  shell_quoted(dir / "g.json") + " --ply " +
-                                                  shell_quoted(dir / "no" / "s.ply") + " 2>&1");
+  const auto [missing, missing_out] =
+      run_command(reeb + " graph " + shell_quoted(dir / "elk.off") + " -o " + shell_quoted(dir / "g.json") + " --ply " +
+                  shell_quoted(dir / "no" / "s.ply") + " 2>&1");
   EXPECT_EQ(missing, 1) << missing_out;
   EXPECT_TRUE(contains(missing_out, {"s.ply: cannot write it: the folder", "does not exist"})) << missing_out;
   EXPECT_EQ(missing_out.find("read and cleaned"), std::string::npos) << missing_out;
   // Two outputs on one file (one would be lost), a folder that is a file:
   // refused before the mesh is read, each named.
   const std::string json = (dir / "a.json").string();
-  for (const auto& [outputs, message] : std::vector<std::pair<std::string, std::string>>{
-           {"-o " + shell_quoted(json) + " --ply " + shell_quoted(json), json + ": is also the output " + json},
-           {"-o " + shell_quoted(dir / "x" / ".." / "a.json") + " --obj " + shell_quoted(json), json + ": is also the output"},
-           {"-o " + shell_quoted(dir / "elk.off" / "x.json"),
-            "x.json: cannot write it: " + (dir / "elk.off").string() + " is a file, not a folder"}}) {
+  for (const auto& [outputs, message] :
+       std::vector<std::pair<std::string, std::string>>{{"-o " + shell_quoted(json) + " --ply " + shell_quoted(json),
+                                                         json + ": is also the output " + json},
+                                                        {"-o " + shell_quoted(dir / "x" / ".." / "a.json") + " --obj " +
+                                                             shell_quoted(json),
+                                                         json + ": is also the output"},
+                                                        {"-o " + shell_quoted(dir / "elk.off" / "x.json"),
+                                                         "x.json: cannot write it: " + (dir / "elk.off").string() +
+                                                             " is a file, not a folder"}}) {
     std::filesystem::create_directories(dir / "x");
     const auto [status, out] = run_command(reeb + " graph " + shell_quoted(dir / "elk.off") + " " + outputs + " 2>&1");
     EXPECT_EQ(status, 1) << outputs << "\n" << out;
@@ -130,11 +135,11 @@ TEST(ReebFeaturesCli, OutputsAreCheckedBeforeWorkAndWrittenWholeOrNotAtAll) {
   // Before: "wrote f.json", exit 0 and an empty file.
   std::ofstream(dir / "f.json") << "previous\n";
   for (const std::string command : {"features", "graph"}) {
-    const auto [status, out] = run_command(
-        with_file_size_limit(reeb + " " + command + " " + shell_quoted(dir / "elk.off") + " -o " +
-                                 shell_quoted(dir / "f.json"),
-                             100) +
-        " 2>&1");
+    const auto [status, out] =
+        run_command(with_file_size_limit(reeb + " " + command + " " + shell_quoted(dir / "elk.off") + " -o " +
+                                             shell_quoted(dir / "f.json"),
+                                         100) +
+                    " 2>&1");
     EXPECT_EQ(status, 1) << out;
     EXPECT_TRUE(contains(out, {(dir / "f.json").string() + ": write error: File too large"})) << out;
     EXPECT_EQ(out.find("wrote"), std::string::npos) << out;
@@ -143,8 +148,7 @@ TEST(ReebFeaturesCli, OutputsAreCheckedBeforeWorkAndWrittenWholeOrNotAtAll) {
   }
 
   // Standard output that cannot be written: exit 1 (before: 0).
-  const auto [full, full_out] =
-      run_command(reeb + " features " + shell_quoted(dir / "elk.off") + " 2>&1 >/dev/full");
+  const auto [full, full_out] = run_command(reeb + " features " + shell_quoted(dir / "elk.off") + " 2>&1 >/dev/full");
   EXPECT_EQ(full, 1) << full_out;
   EXPECT_TRUE(contains(full_out, {"reeb features: error: standard output: write failed: No space left on device"}))
       << full_out;

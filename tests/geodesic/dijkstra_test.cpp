@@ -105,8 +105,10 @@ TEST(Dijkstra, LabelsRestrictTheSearchToOneRegion) {
     const DistanceField& f = solver.run({s}, options);
     Index inside = 0;
     for (Index v = 0; v < g.num_vertices(); ++v) {
-      if (oracle[s][v] == kInf || labels[v] != labels[s]) EXPECT_EQ(f.distance[v], kInf) << s << " -> " << v;
-      else EXPECT_NEAR(f.distance[v], oracle[s][v], 1e-12) << s << " -> " << v;
+      if (oracle[s][v] == kInf || labels[v] != labels[s])
+        EXPECT_EQ(f.distance[v], kInf) << s << " -> " << v;
+      else
+        EXPECT_NEAR(f.distance[v], oracle[s][v], 1e-12) << s << " -> " << v;
       inside += f.distance[v] < kInf ? 1 : 0;
     }
     EXPECT_EQ(f.reached, inside);

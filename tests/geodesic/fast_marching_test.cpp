@@ -89,7 +89,8 @@ TEST(FastMarching, ConvergesUnderRefinement) {
 // are obtuse (up to rounding and the corners of 90-90.6 degrees that are not
 // split, measured 6e-8).
 TEST(FastMarching, PlaneWaveIsExact) {
-  for (const Mesh& mesh : {make_grid(16, 12, 0.25), resample_mesh(make_grid(16, 12, 0.25), ResamplingOptions{0.2, 3})}) {
+  for (const Mesh& mesh :
+       {make_grid(16, 12, 0.25), resample_mesh(make_grid(16, 12, 0.25), ResamplingOptions{0.2, 3})}) {
     const MeshGraph g = build_mesh_graph(mesh);
     std::vector<Index> side;
     for (Index v = 0; v < mesh.num_vertices(); ++v)

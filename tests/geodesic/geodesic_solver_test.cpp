@@ -45,8 +45,11 @@ TYPED_TEST(EveryGeodesicSolver, RadiusBoundStopsTheSearchWithoutChangingDistance
 TYPED_TEST(EveryGeodesicSolver, ReuseGivesTheSameFieldsAsFreshRuns) {
   const MeshGraph g = build_mesh_graph(resample_mesh(make_torus(24, 10)));
   TypeParam solver(g);
-  const std::vector<std::pair<std::vector<Index>, double>> runs = {
-      {{0}, kInf}, {{17, 90}, 0.3}, {{50}, kInf}, {{2}, 0.1}, {{200, 3}, kInf}};
+  const std::vector<std::pair<std::vector<Index>, double>> runs = {{{0}, kInf},
+                                                                   {{17, 90}, 0.3},
+                                                                   {{50}, kInf},
+                                                                   {{2}, 0.1},
+                                                                   {{200, 3}, kInf}};
   for (const auto& [sources, radius] : runs) {
     const DistanceField expected = run_once<TypeParam>(g, sources, GeodesicOptions{radius});
     const DistanceField& got = solver.run(sources, GeodesicOptions{radius});

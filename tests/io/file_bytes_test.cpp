@@ -88,12 +88,14 @@ TEST(FileBytes, TwoOutputsOnOneFileAreRefusedByAnyOfTheirNames) {
   const TempDir dir;
   std::filesystem::create_directories(dir / "sub");
   std::filesystem::create_symlink("a.json", dir / "link.json");
-  const std::vector<std::pair<std::filesystem::path, std::filesystem::path>> same = {
-      {dir / "a.json", dir / "a.json"}, {dir / "a.json", dir / "sub" / ".." / "a.json"}, {dir / "a.json", dir / "link.json"}};
+  const std::vector<std::pair<std::filesystem::path, std::filesystem::path>> same = {{dir / "a.json", dir / "a.json"},
+                                                                                     {dir / "a.json",
+                                                                                      dir / "sub" / ".." / "a.json"},
+                                                                                     {dir / "a.json",
+                                                                                      dir / "link.json"}};
   for (const auto& pair : same) {
     const std::filesystem::path &first = pair.first, &second = pair.second;  // a lambda captures no binding in C++17
-    const std::string message =
-        thrown_message<InvalidArgument>([&] { check_output_files({first, "", second}); });
+    const std::string message = thrown_message<InvalidArgument>([&] { check_output_files({first, "", second}); });
     EXPECT_TRUE(contains(message, {second.string() + ": is also the output " + first.string()})) << message;
   }
   EXPECT_NO_THROW(check_output_files({dir / "a.json", "", dir / "b.json"}));

@@ -100,7 +100,7 @@ inline Polygons polygons(const Mesh& mesh) {
 inline Mesh awkward_tetrahedron() {
   Mesh mesh;
   mesh.vertices.resize(4, 3);
-  mesh.vertices << 0.1, 1.0 / 3.0, 1e-300,  //
+  mesh.vertices << 0.1, 1.0 / 3.0, 1e-300,    //
       3.141592653589793e12, -0.0, 2.0 / 3.0,  //
       -7.0, 5e-324, 0.30000000000000004,      //
       1.7976931348623157e308, -1.0 / 7.0, 42.0;

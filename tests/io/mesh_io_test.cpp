@@ -65,11 +65,11 @@ TEST(MeshIo, UnknownExtensionNamesFileAndSupportedFormats) {
 
 TEST(MeshIo, MissingAndUnreadableFiles) {
   const TempDir dir;
-  EXPECT_TRUE(contains(error_of([&] { read_polygon_soup(dir / "absent.ply"); }).what(),
-                       {"absent.ply", "file not found"}));
+  EXPECT_TRUE(
+      contains(error_of([&] { read_polygon_soup(dir / "absent.ply"); }).what(), {"absent.ply", "file not found"}));
   std::filesystem::create_directories(dir / "folder.off");
-  EXPECT_TRUE(contains(error_of([&] { read_polygon_soup(dir / "folder.off"); }).what(),
-                       {"folder.off", "not a regular file"}));
+  EXPECT_TRUE(
+      contains(error_of([&] { read_polygon_soup(dir / "folder.off"); }).what(), {"folder.off", "not a regular file"}));
 }
 
 TEST(MeshIo, EmptyFilesInEveryFormat) {
@@ -107,8 +107,9 @@ TEST(MeshIo, DamagedFilesThrowOnlyMeshFileError) {
   write_ply(dir / "be.ply", awkward_tetrahedron(), {}, PlyEncoding::BinaryBigEndian);
   std::ifstream le(dir / "le.ply", std::ios::binary);
   std::ifstream be(dir / "be.ply", std::ios::binary);
-  const std::string stl = "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
-                          "endloop\nendfacet\nendsolid\n";
+  const std::string stl =
+      "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+      "endloop\nendfacet\nendsolid\n";
   std::string binary_stl(80, ' ');
   binary_stl += std::string("\x01\0\0\0", 4) + std::string(48, '\0') + "\0\0";
   const std::vector<std::pair<PolygonSoup (*)(std::string_view, std::string), std::string>> files = {

@@ -37,8 +37,7 @@ TEST(Obj, NegativeIndicesCountBackFromTheLatestVertex) {
 }
 
 TEST(Obj, PolygonsOfAnySize) {
-  const PolygonSoup soup =
-      parse_obj("v 0 0 0\nv 1 0 0\nv 2 1 0\nv 1 2 0\nv 0 1 0\nf 1 2 3 4 5\nf 1 2 3 4\n", "p.obj");
+  const PolygonSoup soup = parse_obj("v 0 0 0\nv 1 0 0\nv 2 1 0\nv 1 2 0\nv 0 1 0\nf 1 2 3 4 5\nf 1 2 3 4\n", "p.obj");
   EXPECT_EQ(polygons(soup), (Polygons{{0, 1, 2, 3, 4}, {0, 1, 2, 3}}));
 }
 
@@ -86,8 +85,8 @@ TEST(Obj, SkipsOtherStatementsAndComments) {
 }
 
 TEST(Obj, LineContinuation) {
-  const PolygonSoup soup = parse_obj("v 0 \\\n 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 \\\r\n 4 3\nvt 1 \\\n 2\n",
-                                     "l.obj");
+  const PolygonSoup soup =
+      parse_obj("v 0 \\\n 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 \\\r\n 4 3\nvt 1 \\\n 2\n", "l.obj");
   EXPECT_EQ(soup.num_vertices(), 4);
   EXPECT_EQ(polygons(soup), (Polygons{{0, 1, 3, 2}}));
 }
@@ -127,8 +126,8 @@ TEST(ObjError, NonNumericTokenIsQuoted) {
 }
 
 TEST(ObjError, ShortVertexLine) {
-  EXPECT_TRUE(contains(parse_error(parse_obj, "v 0 0\n", "s.obj"),
-                       {"s.obj:1:", "expected a vertex coordinate, found end of"}));
+  EXPECT_TRUE(
+      contains(parse_error(parse_obj, "v 0 0\n", "s.obj"), {"s.obj:1:", "expected a vertex coordinate, found end of"}));
 }
 
 TEST(ObjError, IndexOutOfRangeNamesFaceAndIndex) {
@@ -159,8 +158,8 @@ TEST(ObjError, NonFiniteCoordinateNamesTheVertex) {
 TEST(ObjError, NotAStatement) {
   EXPECT_TRUE(contains(parse_error(parse_obj, "v 0 0 0\n1.5 2 3\n", "g.obj"),
                        {"g.obj:2:", "expected an OBJ statement, found '1.5'"}));
-  EXPECT_TRUE(contains(parse_error(parse_obj, std::string("\x01\x02\xff", 3), "g.obj"),
-                       {"g.obj:1:", "'\\x01\\x02\\xff'"}));
+  EXPECT_TRUE(
+      contains(parse_error(parse_obj, std::string("\x01\x02\xff", 3), "g.obj"), {"g.obj:1:", "'\\x01\\x02\\xff'"}));
 }
 
 TEST(ObjError, MissingFile) {

@@ -146,26 +146,23 @@ TEST(OffError, EmptyFile) {
 }
 
 TEST(OffError, BadHeader) {
-  EXPECT_TRUE(contains(parse_error(parse_off, "PLY\n3 1 0\n", "h.off"),
-                       {"h.off:1:", "expected an OFF header, found 'PLY'"}));
-  EXPECT_TRUE(contains(parse_error(parse_off, "4OFF\n3 1 0\n", "h.off"),
-                       {"h.off:1:", "unsupported OFF variant '4OFF'"}));
-  EXPECT_TRUE(contains(parse_error(parse_off, "OFF BINARY\n", "h.off"),
-                       {"h.off:1:", "binary OFF is not supported"}));
+  EXPECT_TRUE(
+      contains(parse_error(parse_off, "PLY\n3 1 0\n", "h.off"), {"h.off:1:", "expected an OFF header, found 'PLY'"}));
+  EXPECT_TRUE(
+      contains(parse_error(parse_off, "4OFF\n3 1 0\n", "h.off"), {"h.off:1:", "unsupported OFF variant '4OFF'"}));
+  EXPECT_TRUE(contains(parse_error(parse_off, "OFF BINARY\n", "h.off"), {"h.off:1:", "binary OFF is not supported"}));
 }
 
 TEST(OffError, BadCounts) {
-  EXPECT_TRUE(contains(parse_error(parse_off, "OFF\n-3 1 0\n", "c.off"),
-                       {"c.off:2:", "bad vertex count -3"}));
-  EXPECT_TRUE(contains(parse_error(parse_off, "OFF\n3 x 0\n", "c.off"),
-                       {"c.off:2:", "expected the face count, found 'x'"}));
-  EXPECT_TRUE(contains(parse_error(parse_off, "OFF\n3 1 0\n", "c.off"),
-                       {"c.off", "truncated"}));
+  EXPECT_TRUE(contains(parse_error(parse_off, "OFF\n-3 1 0\n", "c.off"), {"c.off:2:", "bad vertex count -3"}));
+  EXPECT_TRUE(
+      contains(parse_error(parse_off, "OFF\n3 x 0\n", "c.off"), {"c.off:2:", "expected the face count, found 'x'"}));
+  EXPECT_TRUE(contains(parse_error(parse_off, "OFF\n3 1 0\n", "c.off"), {"c.off", "truncated"}));
   // A huge count is rejected before any memory is reserved for it.
   EXPECT_TRUE(contains(parse_error(parse_off, "OFF\n2000000000 2000000000 0\n0 0 0\n", "c.off"),
                        {"c.off", "truncated: file ends after 1 of 2000000000 vertices"}));
-  EXPECT_TRUE(contains(parse_error(parse_off, "OFF\n9999999999 1 0\n", "c.off"),
-                       {"c.off:2:", "bad vertex count 9999999999"}));
+  EXPECT_TRUE(
+      contains(parse_error(parse_off, "OFF\n9999999999 1 0\n", "c.off"), {"c.off:2:", "bad vertex count 9999999999"}));
 }
 
 TEST(OffError, NonNumericTokenIsQuotedWithItsLine) {
@@ -186,8 +183,7 @@ TEST(OffError, TruncatedVertices) {
 }
 
 TEST(OffError, TruncatedFaces) {
-  const MeshFileError e =
-      error_of([] { parse_off("OFF\n3 3 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n", "t.off"); });
+  const MeshFileError e = error_of([] { parse_off("OFF\n3 3 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n", "t.off"); });
   EXPECT_TRUE(contains(e.what(), {"t.off", "truncated: file ends after 2 of 3 faces"}));
 }
 
@@ -197,8 +193,7 @@ TEST(OffError, TruncatedFaceLine) {
 }
 
 TEST(OffError, IndexOutOfRangeNamesFaceAndIndex) {
-  const MeshFileError e =
-      error_of([] { parse_off("OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 1 7\n", "r.off"); });
+  const MeshFileError e = error_of([] { parse_off("OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 1 7\n", "r.off"); });
   EXPECT_TRUE(contains(e.what(), {"r.off:7:", "face 1 refers to vertex 7, but there are 3 vertices"}));
   EXPECT_TRUE(contains(parse_error(parse_off, "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n", "r.off"),
                        {"r.off:6:", "face 0 refers to vertex -1"}));

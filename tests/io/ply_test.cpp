@@ -132,8 +132,7 @@ TEST(Ply, EveryIntegerTypeForFaceLists) {
     for (const char* index_type : types) {
       for (const PlyEncoding encoding : kEncodings) {
         SCOPED_TRACE(std::string(count_type) + " " + index_type + " " + format_name(encoding));
-        const std::string bytes =
-            build_ply(encoding, {xyz_vertices("float"), triangle_faces(count_type, index_type)});
+        const std::string bytes = build_ply(encoding, {xyz_vertices("float"), triangle_faces(count_type, index_type)});
         EXPECT_EQ(polygons(parse_ply(bytes, "t.ply")), kFaces);
       }
     }
@@ -142,7 +141,8 @@ TEST(Ply, EveryIntegerTypeForFaceLists) {
 
 TEST(Ply, FaceListNamedVertexIndex) {
   for (const PlyEncoding encoding : kEncodings) {
-    const std::string bytes = build_ply(encoding, {xyz_vertices("float"), triangle_faces("uchar", "int", "vertex_index")});
+    const std::string bytes =
+        build_ply(encoding, {xyz_vertices("float"), triangle_faces("uchar", "int", "vertex_index")});
     EXPECT_EQ(polygons(parse_ply(bytes, "t.ply")), kFaces) << format_name(encoding);
   }
 }
@@ -170,7 +170,9 @@ TEST(Ply, ExtraPropertiesAndElementsAreSkippedInEveryEncoding) {
                        {"uchar", "red"},
                        {"double", "weights", "uchar"}},
                       {{0.5, 2, 1, 2, 3, 0, 1, 2, 9, 1, 0.1}, {1, 0, 4, 0, 2, 3, 1, 255, 0}}};
-  const Elem edges = {"edge", {{"int", "vertex1"}, {"int", "vertex2"}, {"float", "confidence"}}, {{0, 1, 0.5}, {1, 2, 1}}};
+  const Elem edges = {"edge",
+                      {{"int", "vertex1"}, {"int", "vertex2"}, {"float", "confidence"}},
+                      {{0, 1, 0.5}, {1, 2, 1}}};
   for (const PlyEncoding encoding : kEncodings) {
     SCOPED_TRACE(format_name(encoding));
     const PolygonSoup soup = parse_ply(build_ply(encoding, {material, vertices, faces, edges}), "x.ply");
@@ -209,9 +211,10 @@ TEST(Ply, ABinaryElementWithoutPropertiesHoldsNoBytesWhateverItsCount) {
 }
 
 TEST(Ply, ColorsAsBytesAndAsFloats) {
-  const Elem bytes = {"vertex",
-                      {{"float", "x"}, {"float", "y"}, {"float", "z"}, {"uchar", "red"}, {"uchar", "green"}, {"uchar", "blue"}},
-                      {{0, 0, 0, 255, 0, 51}, {1, 0, 0, 0, 255, 0}, {0, 1, 0, 0, 0, 0}}};
+  const Elem bytes =
+      {"vertex",
+       {{"float", "x"}, {"float", "y"}, {"float", "z"}, {"uchar", "red"}, {"uchar", "green"}, {"uchar", "blue"}},
+       {{0, 0, 0, 255, 0, 51}, {1, 0, 0, 0, 255, 0}, {0, 1, 0, 0, 0, 0}}};
   Elem floats = bytes;
   for (auto& p : floats.props) p.type = "float";
   floats.rows = {{0, 0, 0, 1, 0, 0.25}, {1, 0, 0, 0, 1, 0}, {0, 1, 0, 0, 0, 0}};
@@ -310,8 +313,11 @@ TEST(PlyWrite, RejectsMismatchedData) {
   PlyVertexData colors;
   colors.colors = Points::Zero(3, 3);
   EXPECT_THROW(write_ply(dir / "c.ply", mesh, colors), InvalidArgument);
-  for (const auto& [name, values] : std::vector<std::pair<std::string, std::vector<double>>>{
-           {"short", {1, 2}}, {"", {1, 2, 3, 4}}, {"two words", {1, 2, 3, 4}}, {"x", {1, 2, 3, 4}}}) {
+  for (const auto& [name, values] :
+       std::vector<std::pair<std::string, std::vector<double>>>{{"short", {1, 2}},
+                                                                {"", {1, 2, 3, 4}},
+                                                                {"two words", {1, 2, 3, 4}},
+                                                                {"x", {1, 2, 3, 4}}}) {
     PlyVertexData data;
     data.scalars = {{name, values}};
     EXPECT_THROW(write_ply(dir / "s.ply", mesh, data), InvalidArgument) << "'" << name << "'";
@@ -336,7 +342,8 @@ const std::string kVertexHeader =
 
 TEST(PlyError, EmptyFileAndBadMagic) {
   EXPECT_TRUE(contains(ply_error("").what(), {"bad.ply", "empty file"}));
-  EXPECT_TRUE(contains(ply_error("OFF\n3 1 0\n").what(), {"bad.ply:1:", "not a PLY file: expected 'ply', found 'OFF'"}));
+  EXPECT_TRUE(
+      contains(ply_error("OFF\n3 1 0\n").what(), {"bad.ply:1:", "not a PLY file: expected 'ply', found 'OFF'"}));
 }
 
 TEST(PlyError, HeaderProblems) {
@@ -407,8 +414,9 @@ TEST(PlyError, BinaryTruncatedNamesTheElement) {
 }
 
 TEST(PlyError, HugeCountsFailWithoutReservingMemory) {
-  const std::string header = "ply\nformat binary_little_endian 1.0\nelement vertex 2000000000\n"
-                             "property double x\nproperty double y\nproperty double z\nend_header\n";
+  const std::string header =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 2000000000\n"
+      "property double x\nproperty double y\nproperty double z\nend_header\n";
   EXPECT_TRUE(contains(ply_error(header + std::string(48, '\0')).what(),
                        {"truncated: file ends after 2 of 2000000000 vertices"}));
 }

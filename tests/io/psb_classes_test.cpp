@@ -49,8 +49,7 @@ TEST(PsbClasses, ErrorsNameFileAndLine) {
             file + ":4: file ends where model 2 of 2 of class A was expected");
   EXPECT_EQ(cla_error(dir, "PSB 1\n2 2\nA 0 1\n1\nB 0 1\n1\n"), file + ":6: model 1 is already in class A");
   EXPECT_EQ(cla_error(dir, "PSB 1\n1 3\nA 0 2\n1\n2\n"), file + ":5: the classes list 2 models, the header says 3");
-  EXPECT_EQ(cla_error(dir, "PSB 1\n1 1\nA 0 1\n1\nB 0 1\n"),
-            file + ":5: more lines than the 1 classes of the header");
+  EXPECT_EQ(cla_error(dir, "PSB 1\n1 1\nA 0 1\n1\nB 0 1\n"), file + ":5: more lines than the 1 classes of the header");
   EXPECT_EQ(cla_error(dir, "PSB 1\n1 1\nA 0\n"), file + ":3: expected '<class name> <parent> <number of models>'");
 }
 

@@ -60,7 +60,8 @@ struct Case {
 
 std::vector<Case> absurd_headers() {
   return {
-      {"OFF claiming 10^12 vertices", [] { parse_off("OFF\n1000000000000 1 0\n0 0 0\n", "a.off"); },
+      {"OFF claiming 10^12 vertices",
+       [] { parse_off("OFF\n1000000000000 1 0\n0 0 0\n", "a.off"); },
        {"a.off:2:", "bad vertex count 1000000000000"}},
       {"OFF claiming 2^31 - 1 vertices and faces",
        [] { parse_off("OFF\n2147483647 2147483647 0\n0 0 0\n", "a.off"); },
@@ -73,15 +74,18 @@ std::vector<Case> absurd_headers() {
        {"a.ply:3:", "bad 'vertex' element count 1000000000000"}},
       {"binary PLY claiming 2^31 - 1 vertices",
        [] {
-         parse_ply("ply\nformat binary_little_endian 1.0\nelement vertex 2147483647\nproperty float x\n"
-                   "property float y\nproperty float z\nend_header\n" +
-                       std::string(12, '\0'),
-                   "a.ply");
+         parse_ply(
+             "ply\nformat binary_little_endian 1.0\nelement vertex 2147483647\nproperty float x\n"
+             "property float y\nproperty float z\nend_header\n" +
+                 std::string(12, '\0'),
+             "a.ply");
        },
        {"a.ply", "truncated", "of 2147483647 vertices"}},
-      {"binary PLY face claiming 10^9 corners", [] { parse_ply(ply_face_claiming(1000000000u), "a.ply"); },
+      {"binary PLY face claiming 10^9 corners",
+       [] { parse_ply(ply_face_claiming(1000000000u), "a.ply"); },
        {"a.ply", "truncated"}},
-      {"binary STL claiming 2^32 - 1 triangles", [] { parse_stl(stl_claiming(4294967295u), "a.stl"); },
+      {"binary STL claiming 2^32 - 1 triangles",
+       [] { parse_stl(stl_claiming(4294967295u), "a.stl"); },
        {"a.stl", "truncated: the binary header declares 4294967295 triangles"}},
   };
 }

@@ -31,8 +31,7 @@ std::string binary_stl(const std::vector<Triangle>& triangles, const std::string
 }
 
 /// Two triangles sharing the edge (1,0,0)-(0,1,0).
-const std::vector<Triangle> kTwoTriangles = {Triangle{0, 0, 0, 1, 0, 0, 0, 1, 0},
-                                             Triangle{1, 0, 0, 1, 1, 0, 0, 1, 0}};
+const std::vector<Triangle> kTwoTriangles = {Triangle{0, 0, 0, 1, 0, 0, 0, 1, 0}, Triangle{1, 0, 0, 1, 1, 0, 0, 1, 0}};
 
 constexpr const char* kAsciiSquare =
     "solid square\n"
@@ -70,9 +69,7 @@ TEST(Stl, BinaryWhoseHeaderStartsWithSolid) {
   expect_square(parse_stl(binary_stl(kTwoTriangles, "solid but binary"), "sq.stl"));
 }
 
-TEST(Stl, BinaryWithTrailingBytes) {
-  expect_square(parse_stl(binary_stl(kTwoTriangles) + "trailing junk", "sq.stl"));
-}
+TEST(Stl, BinaryWithTrailingBytes) { expect_square(parse_stl(binary_stl(kTwoTriangles) + "trailing junk", "sq.stl")); }
 
 TEST(Stl, WeldsOnlyBitIdenticalCorners) {
   const float nudged = std::nextafter(1.0f, 2.0f);
@@ -80,7 +77,8 @@ TEST(Stl, WeldsOnlyBitIdenticalCorners) {
       parse_stl(binary_stl({Triangle{0, 0, 0, 1, 0, 0, 0, 1, 0}, Triangle{nudged, 0, 0, 1, 1, 0, 0, 1, 0}}), "n.stl");
   EXPECT_EQ(soup.num_vertices(), 5);
   const PolygonSoup zeros =
-      parse_stl(binary_stl({Triangle{0, 0, 0, 1, 0, 0, 0, 1, 0}, Triangle{-0.0f, -0.0f, 0, 1, 0, 0, 0, 0, 1}}), "z.stl");
+      parse_stl(binary_stl({Triangle{0, 0, 0, 1, 0, 0, 0, 1, 0}, Triangle{-0.0f, -0.0f, 0, 1, 0, 0, 0, 0, 1}}),
+                "z.stl");
   EXPECT_EQ(zeros.num_vertices(), 4);  // -0 and +0 are one position
 }
 
@@ -111,9 +109,7 @@ TEST(Stl, EmptySolid) {
 
 // --- errors ------------------------------------------------------------------
 
-TEST(StlError, EmptyFile) {
-  EXPECT_TRUE(contains(parse_error(parse_stl, "", "e.stl"), {"e.stl", "empty file"}));
-}
+TEST(StlError, EmptyFile) { EXPECT_TRUE(contains(parse_error(parse_stl, "", "e.stl"), {"e.stl", "empty file"})); }
 
 TEST(StlError, BinaryTruncated) {
   const std::string whole = binary_stl(kTwoTriangles);
@@ -129,7 +125,8 @@ TEST(StlError, BinaryTruncated) {
 
 TEST(StlError, BinaryNonFiniteCoordinate) {
   const std::string bytes = binary_stl({kTwoTriangles[0], Triangle{0, 0, 0, 1, std::nanf(""), 0, 0, 1, 0}});
-  EXPECT_TRUE(contains(parse_error(parse_stl, bytes, "f.stl"), {"f.stl: facet 1, corner 1 has a non-finite coordinate"}));
+  EXPECT_TRUE(
+      contains(parse_error(parse_stl, bytes, "f.stl"), {"f.stl: facet 1, corner 1 has a non-finite coordinate"}));
 }
 
 TEST(StlError, AsciiProblemsNameTheLine) {

@@ -13,7 +13,8 @@ namespace {
 
 TEST(Vts, IdsInFileOrderAndErrorsNamingTheLine) {
   const TempDir dir;
-  write_bytes(dir / "1.vts", "     4    -0.047776    -0.004247     0.416383\n   347 -0.01 -0.14 0.20\r\n\n1744 0 1e-3 5\n");
+  write_bytes(dir / "1.vts",
+              "     4    -0.047776    -0.004247     0.416383\n   347 -0.01 -0.14 0.20\r\n\n1744 0 1e-3 5\n");
   EXPECT_EQ(read_vts(dir / "1.vts"), (std::vector<Index>{4, 347, 1744}));
   write_bytes(dir / "bad.vts", "4 0 0 0\n5 0 0\n");
   const MeshFileError e = error_of([&] { read_vts(dir / "bad.vts"); });

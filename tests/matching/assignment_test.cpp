@@ -20,7 +20,8 @@ double brute_force(const std::vector<double>& cost, int rows, int cols) {
   double best = std::numeric_limits<double>::infinity();
   do {  // permutations of all columns; the first `rows` are the assignment
     double total = 0;
-    for (int i = 0; i < rows; ++i) total += cost[static_cast<std::size_t>(i * cols + columns[static_cast<std::size_t>(i)])];
+    for (int i = 0; i < rows; ++i)
+      total += cost[static_cast<std::size_t>(i * cols + columns[static_cast<std::size_t>(i)])];
     best = std::min(best, total);
   } while (std::next_permutation(columns.begin(), columns.end()));
   return best;
@@ -45,9 +46,7 @@ void expect_valid(const std::vector<double>& cost, int rows, int cols, const std
 TEST(Assignment, HandCheckedThreeByThree) {
   // Rows pick columns 1, 0, 2: 1 + 2 + 2 = 5; the next best permutations,
   // (0, 1, 2) and (2, 1, 0), cost 6.
-  const std::vector<double> cost = {4, 1, 3,
-                                    2, 0, 5,
-                                    3, 2, 2};
+  const std::vector<double> cost = {4, 1, 3, 2, 0, 5, 3, 2, 2};
   std::vector<std::int32_t> assignment;
   const double total = solve_assignment(cost, 3, 3, assignment);
   EXPECT_DOUBLE_EQ(total, 5.0);
@@ -56,10 +55,7 @@ TEST(Assignment, HandCheckedThreeByThree) {
 }
 
 TEST(Assignment, IdentityIsOptimalOnZeroDiagonal) {
-  const std::vector<double> cost = {0, 7, 9, 9,
-                                    7, 0, 9, 9,
-                                    9, 9, 0, 1,
-                                    9, 9, 1, 0};
+  const std::vector<double> cost = {0, 7, 9, 9, 7, 0, 9, 9, 9, 9, 0, 1, 9, 9, 1, 0};
   std::vector<std::int32_t> assignment;
   EXPECT_DOUBLE_EQ(solve_assignment(cost, 4, 4, assignment), 0.0);
   EXPECT_EQ(assignment, (std::vector<std::int32_t>{0, 1, 2, 3}));
@@ -68,16 +64,14 @@ TEST(Assignment, IdentityIsOptimalOnZeroDiagonal) {
 TEST(Assignment, RectangularPicksTheCheapColumns) {
   // Two rows, four columns: row 0 -> column 3 (1), row 1 -> column 2 (1);
   // the cheapest columns of both rows collide on column 3 otherwise.
-  const std::vector<double> cost = {5, 6, 4, 1,
-                                    8, 9, 1, 0.5};
+  const std::vector<double> cost = {5, 6, 4, 1, 8, 9, 1, 0.5};
   std::vector<std::int32_t> assignment;
   EXPECT_DOUBLE_EQ(solve_assignment(cost, 2, 4, assignment), 2.0);
   EXPECT_EQ(assignment, (std::vector<std::int32_t>{3, 2}));
 }
 
 TEST(Assignment, NegativeCostsAndEmptyProblem) {
-  const std::vector<double> cost = {-1, -5,
-                                    -3, -2};
+  const std::vector<double> cost = {-1, -5, -3, -2};
   std::vector<std::int32_t> assignment;
   EXPECT_DOUBLE_EQ(solve_assignment(cost, 2, 2, assignment), -8.0);  // -5 + -3
   EXPECT_DOUBLE_EQ(solve_assignment({}, 0, 0, assignment), 0.0);

@@ -54,9 +54,8 @@ TEST(MatchingOptions, TheTableHasARowPerFieldEachSettingItsOwnField) {
     const OptionValue value = field.get(options);
     // The default is in the option's range, and a value just inside it sets only this row's field.
     EXPECT_NO_THROW(field.check(options)) << field.name;
-    const OptionValue other = std::holds_alternative<double>(value)
-                                  ? OptionValue(std::get<double>(value) + 0.5)
-                                  : OptionValue(std::get<std::int64_t>(value) + 1);
+    const OptionValue other = std::holds_alternative<double>(value) ? OptionValue(std::get<double>(value) + 0.5)
+                                                                    : OptionValue(std::get<std::int64_t>(value) + 1);
     field.set(options, other);
     EXPECT_EQ(field.get(options), other) << field.name;
     for (const MatchingOptionField& row : fields) {
@@ -73,8 +72,9 @@ TEST(MatchingOptions, AValueOutOfItsRangeIsRefusedNamingTheOption) {
   const GraphRecord a = make_graph_record(analysis, compute_attributes(analysis));
   for (const MatchingOptionField& field : matching_option_fields()) {
     const bool number = std::holds_alternative<double>(field.get(MatchingOptions{}));
-    for (const OptionValue& bad : {number ? OptionValue(-1.0) : OptionValue(std::int64_t{-1}),
-                                  number ? OptionValue(std::numeric_limits<double>::quiet_NaN()) : OptionValue(std::int64_t{-1})}) {
+    for (const OptionValue& bad :
+         {number ? OptionValue(-1.0) : OptionValue(std::int64_t{-1}),
+          number ? OptionValue(std::numeric_limits<double>::quiet_NaN()) : OptionValue(std::int64_t{-1})}) {
       MatchingOptions options;
       field.set(options, bad);
       const std::string message = thrown_message<InvalidArgument>([&] { match_graphs(a, a, options); });

@@ -39,9 +39,9 @@ TEST(ReebMatchCli, DistanceCorrespondenceAndObj) {
   ASSERT_GT(expected.distance, 0.0);
 
   const std::string collection = (dir / "c.h5").string();
-  const auto [status, out] = run_command(reeb + " match " + shell_quoted(collection + ":cactus.off") + " " +
-                                         shell_quoted(dir / "in" / "eight.off") + " --obj " +
-                                         shell_quoted(dir / "m.obj") + " 2>&1");
+  const auto [status, out] =
+      run_command(reeb + " match " + shell_quoted(collection + ":cactus.off") + " " +
+                  shell_quoted(dir / "in" / "eight.off") + " --obj " + shell_quoted(dir / "m.obj") + " 2>&1");
   ASSERT_EQ(status, 0) << out;
   EXPECT_NEAR(printed_distance(out), expected.distance, 1e-5 * expected.distance) << out;
 
@@ -56,24 +56,24 @@ TEST(ReebMatchCli, DistanceCorrespondenceAndObj) {
   EXPECT_EQ(vertices, cactus.num_nodes() + eight.num_nodes());
   EXPECT_EQ(lines, cactus.num_edges() + eight.num_edges() + matched);
 
-  const auto [self_status, self] =
-      run_command(reeb + " match " + shell_quoted(collection + ":eight.off") + " " + shell_quoted(collection + ":eight.off"));
+  const auto [self_status, self] = run_command(reeb + " match " + shell_quoted(collection + ":eight.off") + " " +
+                                               shell_quoted(collection + ":eight.off"));
   ASSERT_EQ(self_status, 0) << self;
   EXPECT_NEAR(printed_distance(self), 0.0, 1e-12) << self;
   EXPECT_EQ(self.find("deleted"), std::string::npos) << self;
   EXPECT_EQ(self.find("inserted"), std::string::npos) << self;
 
-  const auto [missing, missing_out] =
-      run_command(reeb + " match " + shell_quoted(collection + ":nope.off") + " " + shell_quoted(collection + ":eight.off") + " 2>&1");
+  const auto [missing, missing_out] = run_command(reeb + " match " + shell_quoted(collection + ":nope.off") + " " +
+                                                  shell_quoted(collection + ":eight.off") + " 2>&1");
   EXPECT_EQ(missing, 1);
   EXPECT_NE(missing_out.find("no mesh named 'nope.off'"), std::string::npos) << missing_out;
 
   // The collection read is an input: --obj on it is refused, the file kept
   // (before: overwritten with OBJ text, exit 0).
   const std::string bytes = read_file_bytes(dir / "c.h5");
-  const auto [onto, onto_out] = run_command(reeb + " match " + shell_quoted(collection + ":cactus.off") + " " +
-                                            shell_quoted(dir / "in" / "eight.off") + " --obj " +
-                                            shell_quoted(collection) + " 2>&1");
+  const auto [onto, onto_out] =
+      run_command(reeb + " match " + shell_quoted(collection + ":cactus.off") + " " +
+                  shell_quoted(dir / "in" / "eight.off") + " --obj " + shell_quoted(collection) + " 2>&1");
   EXPECT_EQ(onto, 1) << onto_out;
   EXPECT_TRUE(contains(onto_out, {collection + ": is an input of this command"})) << onto_out;
   EXPECT_EQ(read_file_bytes(dir / "c.h5"), bytes);

@@ -101,8 +101,9 @@ TEST(LaplaceBeltrami, VerticesOnZeroAreaTrianglesOnlyAreLeftOut) {
 
   Mesh flat = m;  // only the triangle of zero area: no operator
   flat.triangles = m.triangles.bottomRows(1);
-  EXPECT_NE(test::thrown_message<InvalidMeshError>([&] { laplace_beltrami(flat); })
-                .find("flat.off: no triangle of nonzero area"),
+  EXPECT_NE(test::thrown_message<InvalidMeshError>([&] {
+              laplace_beltrami(flat);
+            }).find("flat.off: no triangle of nonzero area"),
             std::string::npos);
   Mesh empty;
   empty.source = "empty.off";

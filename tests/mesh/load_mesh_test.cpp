@@ -37,8 +37,8 @@ std::string message_of_loading(const fs::path& path) {
 }
 
 TEST(LoadMesh, ReadsAndCleansAFile) {
-  const fs::path path = write_file("load_mesh_square.off",
-                                   "OFF\n5 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n7 7 7\n4 0 1 2 3\n3 2 2 1\n");
+  const fs::path path =
+      write_file("load_mesh_square.off", "OFF\n5 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n7 7 7\n4 0 1 2 3\n3 2 2 1\n");
   const CleanedMesh cleaned = load_mesh(path);
   ASSERT_EQ(cleaned.components.size(), 1u);
   EXPECT_EQ(cleaned.components[0].num_triangles(), 2);
@@ -88,7 +88,9 @@ std::string json_field(const std::string& line, const std::string& key) {
   return line.substr(begin, end - begin);
 }
 
-int json_int(const std::string& line, const std::string& key) { return static_cast<int>(std::stod(json_field(line, key))); }
+int json_int(const std::string& line, const std::string& key) {
+  return static_cast<int>(std::stod(json_field(line, key)));
+}
 
 /// The manifest rows by file name (the manifest names a few files by a longer path).
 std::map<std::string, std::string> read_manifest(const fs::path& dir) {
@@ -152,8 +154,8 @@ TEST(CgalMeshes, EveryFileLoadsOrItsErrorNamesIt) {
       ADD_FAILURE() << file << " threw a non-reebkit exception: " << e.what();
     }
   }
-  std::cout << files.size() - static_cast<std::size_t>(failed) << " of " << files.size() << " files loaded; "
-            << failed << " failed:\n"
+  std::cout << files.size() - static_cast<std::size_t>(failed) << " of " << files.size() << " files loaded; " << failed
+            << " failed:\n"
             << failures.str();
 }
 
@@ -172,14 +174,15 @@ TEST(CgalMeshes, TopologyAgreesWithTheManifest) {
     SCOPED_TRACE(name);
     const Measured m = measure(load_mesh(dir / name, keep_all()));
     const bool closed = json_field(row, "closed") == "true";
-    std::map<std::string, std::pair<int, int>> fields = {
-        {"chi", {m.chi, json_int(row, "chi")}},
-        {"boundary_edges", {m.boundary_edges, json_int(row, "boundary_edges")}},
-        {"comps", {m.components, json_int(row, "comps")}},
-        {"nm_edges", {m.nm_edges, json_int(row, "nm_edges")}},
-        {"nm_verts", {m.nm_verts, json_int(row, "nm_verts")}},
-        {"closed", {m.closed, closed}},
-        {"manifold", {m.manifold, json_field(row, "manifold") == "true"}}};
+    std::map<std::string, std::pair<int, int>> fields = {{"chi", {m.chi, json_int(row, "chi")}},
+                                                         {"boundary_edges",
+                                                          {m.boundary_edges, json_int(row, "boundary_edges")}},
+                                                         {"comps", {m.components, json_int(row, "comps")}},
+                                                         {"nm_edges", {m.nm_edges, json_int(row, "nm_edges")}},
+                                                         {"nm_verts", {m.nm_verts, json_int(row, "nm_verts")}},
+                                                         {"closed", {m.closed, closed}},
+                                                         {"manifold",
+                                                          {m.manifold, json_field(row, "manifold") == "true"}}};
     if (closed) fields["genus"] = {m.genus, json_int(row, "genus")};
     for (const auto& [field, values] : fields) EXPECT_EQ(values.first, values.second) << field;
     ++compared;

@@ -15,8 +15,8 @@
 namespace reebkit {
 namespace {
 
-PolygonSoup make_soup(const std::vector<std::array<double, 3>>& points,
-                      const std::vector<std::vector<Index>>& polygons, const std::string& source = "soup.off") {
+PolygonSoup make_soup(const std::vector<std::array<double, 3>>& points, const std::vector<std::vector<Index>>& polygons,
+                      const std::string& source = "soup.off") {
   PolygonSoup soup;
   soup.source = source;
   soup.vertices.resize(static_cast<Eigen::Index>(points.size()), 3);
@@ -90,8 +90,8 @@ TEST(CleanMesh, PentagonGivesThreeTriangles) {
 TEST(CleanMesh, NonConvexPolygonIsEarClipped) {
   // An L-shaped hexagon that starts at a corner next to the reflex vertex:
   // a fan from vertex 0 would produce a flipped, overlapping triangle.
-  const CleanedMesh cleaned = clean_mesh(
-      make_soup({{2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}, {0, 0, 0}, {2, 0, 0}}, {{0, 1, 2, 3, 4, 5}}));
+  const CleanedMesh cleaned =
+      clean_mesh(make_soup({{2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}, {0, 0, 0}, {2, 0, 0}}, {{0, 1, 2, 3, 4, 5}}));
   const Mesh& mesh = cleaned.components[0];
   EXPECT_EQ(mesh.num_triangles(), 4);
   expect_faces_up(mesh);
@@ -112,8 +112,8 @@ TEST(CleanMesh, CornersOnAStraightEdgeGiveNoFlatTriangle) {
 
 TEST(CleanMesh, TriangulationKeepsThePolygonOrientation) {
   // The L shape in the x = 0 plane, traversed clockwise seen from +x.
-  const CleanedMesh cleaned = clean_mesh(make_soup(
-      {{0, 0, 2}, {0, 1, 2}, {0, 1, 1}, {0, 2, 1}, {0, 2, 0}, {0, 0, 0}}, {{0, 1, 2, 3, 4, 5}}));
+  const CleanedMesh cleaned =
+      clean_mesh(make_soup({{0, 0, 2}, {0, 1, 2}, {0, 1, 1}, {0, 2, 1}, {0, 2, 0}, {0, 0, 0}}, {{0, 1, 2, 3, 4, 5}}));
   const Mesh& mesh = cleaned.components[0];
   ASSERT_EQ(mesh.num_triangles(), 4);
   for (Index t = 0; t < 4; ++t) EXPECT_LT(triangle_normal(mesh, t).x(), 0) << "triangle " << t;
@@ -137,8 +137,8 @@ TEST(CleanMesh, DegenerateFacesAreDropped) {
 }
 
 TEST(CleanMesh, DuplicateFacesInEitherOrientationAreDropped) {
-  const CleanedMesh cleaned = clean_mesh(make_soup({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}},
-                                                   {{0, 1, 2}, {1, 3, 2}, {1, 2, 0}, {2, 1, 0}, {2, 3, 1}}));
+  const CleanedMesh cleaned = clean_mesh(
+      make_soup({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}}, {{0, 1, 2}, {1, 3, 2}, {1, 2, 0}, {2, 1, 0}, {2, 3, 1}}));
   EXPECT_EQ(cleaned.report.duplicate_faces_dropped, 3);
   const Mesh& mesh = cleaned.components[0];
   ASSERT_EQ(mesh.num_triangles(), 2);
@@ -172,8 +172,8 @@ TEST(CleanMesh, DuplicatesInALargeFanAreDroppedAndTheFirstKept) {
 }
 
 TEST(CleanMesh, UnreferencedVerticesAreDroppedAndSourceVertexMapsBack) {
-  const PolygonSoup soup = make_soup({{0, 0, 0}, {1, 0, 0}, {9, 9, 9}, {0, 1, 0}, {1, 1, 0}, {8, 8, 8}},
-                                     {{0, 1, 3}, {1, 4, 3}});
+  const PolygonSoup soup =
+      make_soup({{0, 0, 0}, {1, 0, 0}, {9, 9, 9}, {0, 1, 0}, {1, 1, 0}, {8, 8, 8}}, {{0, 1, 3}, {1, 4, 3}});
   const CleanedMesh cleaned = clean_mesh(soup);
   EXPECT_EQ(cleaned.report.unreferenced_vertices_dropped, 2);
   const Mesh& mesh = cleaned.components[0];
@@ -203,7 +203,8 @@ TEST(CleanMesh, KeepsTheLargestComponentByDefaultAndWarns) {
   const std::string& warning = cleaned.report.warnings[0];
   EXPECT_EQ(warning,
             "soup.off: kept the largest of 2 connected components (2 triangles, 88.9% of the area); "
-            "dropped 1 component with 1 triangle (11.1% of the area); the reeb commands keep them with --all-components");
+            "dropped 1 component with 1 triangle (11.1% of the area); the reeb commands keep them with "
+            "--all-components");
 }
 
 TEST(CleanMesh, KeepAllComponentsSortsThemLargestFirst) {
@@ -224,12 +225,22 @@ TEST(CleanMesh, EqualAreasAreOrderedByTriangleCountThenSourceVertex) {
   // its centre, then another quad.
   CleanupOptions options;
   options.keep_all_components = true;
-  const CleanedMesh cleaned = clean_mesh(make_soup({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
-                                                    {5, 0, 0}, {6, 0, 0}, {6, 1, 0}, {5, 1, 0}, {5.5, 0.5, 0},
-                                                    {9, 0, 0}, {10, 0, 0}, {10, 1, 0}, {9, 1, 0}},
-                                                   {{9, 10, 11, 12}, {4, 5, 8}, {5, 6, 8}, {6, 7, 8}, {7, 4, 8},
-                                                    {0, 1, 2, 3}}),
-                                         options);
+  const CleanedMesh cleaned =
+      clean_mesh(make_soup({{0, 0, 0},
+                            {1, 0, 0},
+                            {1, 1, 0},
+                            {0, 1, 0},
+                            {5, 0, 0},
+                            {6, 0, 0},
+                            {6, 1, 0},
+                            {5, 1, 0},
+                            {5.5, 0.5, 0},
+                            {9, 0, 0},
+                            {10, 0, 0},
+                            {10, 1, 0},
+                            {9, 1, 0}},
+                           {{9, 10, 11, 12}, {4, 5, 8}, {5, 6, 8}, {6, 7, 8}, {7, 4, 8}, {0, 1, 2, 3}}),
+                 options);
   ASSERT_EQ(cleaned.components.size(), 3u);
   EXPECT_EQ(cleaned.components[0].source_vertex.front(), 4);
   EXPECT_EQ(cleaned.components[1].source_vertex.front(), 0);
@@ -237,8 +248,8 @@ TEST(CleanMesh, EqualAreasAreOrderedByTriangleCountThenSourceVertex) {
 }
 
 TEST(CleanMesh, BowtieVertexIsReportedAsNonManifold) {
-  const CleanedMesh cleaned = clean_mesh(
-      make_soup({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}}, {{0, 1, 2}, {0, 3, 4}}));
+  const CleanedMesh cleaned =
+      clean_mesh(make_soup({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}}, {{0, 1, 2}, {0, 3, 4}}));
   EXPECT_EQ(cleaned.report.non_manifold_vertices, 1);
   EXPECT_EQ(cleaned.report.non_manifold_edges, 0);
   EXPECT_EQ(cleaned.report.components, 1);
@@ -251,8 +262,8 @@ TEST(CleanMesh, BowtieVertexIsReportedAsNonManifold) {
 }
 
 TEST(CleanMesh, ThreeTrianglesOnOneEdgeAreANonManifoldEdge) {
-  const CleanedMesh cleaned = clean_mesh(make_soup({{0, 0, 0}, {0, 0, 1}, {1, 0, 0}, {0, 1, 0}, {-1, -1, 0}},
-                                                   {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}}));
+  const CleanedMesh cleaned = clean_mesh(
+      make_soup({{0, 0, 0}, {0, 0, 1}, {1, 0, 0}, {0, 1, 0}, {-1, -1, 0}}, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}}));
   EXPECT_EQ(cleaned.report.non_manifold_edges, 1);
   // Both ends of that edge see three fans, since fans never cross it.
   EXPECT_EQ(cleaned.report.non_manifold_vertices, 2);
@@ -302,8 +313,8 @@ TEST(CleanMesh, MergingCoincidentVerticesWeldsSeparateTriangles) {
 TEST(CleanMesh, MergingCanMakeFacesDegenerate) {
   CleanupOptions options;
   options.merge_coincident_vertices = true;
-  const CleanedMesh cleaned = clean_mesh(
-      make_soup({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 0, 0}}, {{0, 1, 2}, {1, 3, 2}}), options);
+  const CleanedMesh cleaned =
+      clean_mesh(make_soup({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 0, 0}}, {{0, 1, 2}, {1, 3, 2}}), options);
   EXPECT_EQ(cleaned.report.coincident_vertices_merged, 1);
   EXPECT_EQ(cleaned.report.degenerate_faces_dropped, 1);
   EXPECT_EQ(cleaned.components[0].num_triangles(), 1);

@@ -29,8 +29,18 @@ Mesh make_mesh(Index num_vertices, const std::vector<std::vector<Index>>& triang
 Mesh tetrahedron() { return make_mesh(4, {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}}); }
 
 Mesh cube() {
-  return make_mesh(8, {{0, 3, 2}, {0, 2, 1}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
-                       {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}});
+  return make_mesh(8, {{0, 3, 2},
+                       {0, 2, 1},
+                       {4, 5, 6},
+                       {4, 6, 7},
+                       {0, 1, 5},
+                       {0, 5, 4},
+                       {1, 2, 6},
+                       {1, 6, 5},
+                       {2, 3, 7},
+                       {2, 7, 6},
+                       {3, 0, 4},
+                       {3, 4, 7}});
 }
 
 /// An n x m grid of squares, each split in two; with `wrap` its opposite
@@ -82,7 +92,8 @@ Mesh without(const Mesh& mesh, const std::vector<Index>& removed) {
   Mesh result = mesh;
   Index kept = 0;
   for (Index t = 0; t < mesh.num_triangles(); ++t)
-    if (std::find(removed.begin(), removed.end(), t) == removed.end()) result.triangles.row(kept++) = mesh.triangles.row(t);
+    if (std::find(removed.begin(), removed.end(), t) == removed.end())
+      result.triangles.row(kept++) = mesh.triangles.row(t);
   result.triangles.conservativeResize(kept, 3);
   return result;
 }
@@ -213,8 +224,8 @@ TEST(AnalyzeTopology, IsolatedVertexIsANonManifoldComponent) {
 
 TEST(AnalyzeTopology, MoebiusStripIsNotOrientable) {
   // A strip of 4 squares whose ends are glued with a half twist.
-  const Mesh strip = make_mesh(8, {{0, 1, 5}, {0, 5, 4}, {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6},
-                                   {3, 4, 0}, {3, 0, 7}});
+  const Mesh strip =
+      make_mesh(8, {{0, 1, 5}, {0, 5, 4}, {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 4, 0}, {3, 0, 7}});
   const MeshTopology topology = analyze_topology(strip);
   EXPECT_TRUE(topology.manifold);
   EXPECT_FALSE(topology.orientable);

@@ -34,7 +34,8 @@ double longest_edge(const std::filesystem::path& path) {
   for (Index p = 0; p < soup.num_polygons(); ++p)
     for (Index i = soup.face_offset[p]; i < soup.face_offset[p + 1]; ++i) {
       const Index next = i + 1 < soup.face_offset[p + 1] ? i + 1 : soup.face_offset[p];
-      longest = std::max(longest, (soup.vertices.row(soup.face_vertex[i]) - soup.vertices.row(soup.face_vertex[next])).norm());
+      longest = std::max(longest,
+                         (soup.vertices.row(soup.face_vertex[i]) - soup.vertices.row(soup.face_vertex[next])).norm());
     }
   return longest;
 }
@@ -47,21 +48,21 @@ TEST(ReebPerturbCli, VariantAndCorrespondence) {
   const double diagonal = (original.colwise().maxCoeff() - original.colwise().minCoeff()).norm();
   struct Case {
     std::string options;
-    double vertices;  // expected count, 0 = any
+    double vertices;   // expected count, 0 = any
     double tolerance;  // how far a vertex may be from its original vertex
   };
   const double edge = longest_edge(input);
   const Case cases[] = {
-      {"--decimate 0.5", 0.5 * n, 1e-6 * diagonal},  // kept vertices stay
+      {"--decimate 0.5", 0.5 * n, 1e-6 * diagonal},              // kept vertices stay
       {"--remesh " + std::to_string(original.rows()), n, edge},  // inside an original triangle
-      {"--subdivide 1", 0, 0.5 * edge},  // a midpoint, half an edge from either end
-      {"--noise 0.001", n, 0.01 * diagonal},  // 10 sigma
-      {"--pose 3", n, diagonal},  // a turned limb moves far; the ids stay
+      {"--subdivide 1", 0, 0.5 * edge},                          // a midpoint, half an edge from either end
+      {"--noise 0.001", n, 0.01 * diagonal},                     // 10 sigma
+      {"--pose 3", n, diagonal},                                 // a turned limb moves far; the ids stay
   };
   for (const Case& c : cases) {
     const std::filesystem::path out = dir / "variant.off";
-    const auto [status, output] =
-        run_command(std::string(REEB_BINARY) + " perturb " + shell_quoted(input) + " -o " + shell_quoted(out) + " " + c.options);
+    const auto [status, output] = run_command(std::string(REEB_BINARY) + " perturb " + shell_quoted(input) + " -o " +
+                                              shell_quoted(out) + " " + c.options);
     ASSERT_EQ(status, 0) << c.options << "\n" << output;
     const Points variant = read_vertices(out);
     const std::vector<Index> ids = read_correspondence(dir / "variant.corr");
@@ -73,8 +74,7 @@ TEST(ReebPerturbCli, VariantAndCorrespondence) {
       const Index o = ids[static_cast<std::size_t>(v)];
       ASSERT_GE(o, 0);
       ASSERT_LT(o, original.rows());
-      EXPECT_LE((variant.row(v) - original.row(o)).norm(), c.tolerance)
-          << c.options << ", vertex " << v;
+      EXPECT_LE((variant.row(v) - original.row(o)).norm(), c.tolerance) << c.options << ", vertex " << v;
     }
   }
 }
@@ -93,7 +93,9 @@ TEST(ReebPerturbCli, RotationScaleTranslationAreExact) {
     EXPECT_TRUE(moved.row(v).transpose().isApprox(Vec3(-2 * p.y() + 1, 2 * p.x() + 2, 2 * p.z() + 3), 1e-6));
   }
   EXPECT_NE(run_command(std::string(REEB_BINARY) + " perturb " + shell_quoted(input) + " -o " + shell_quoted(out) +
-                        " --rotate q:90").first, 0);
+                        " --rotate q:90")
+                .first,
+            0);
 }
 
 // Before: -o on the input overwrote it (exit 0).
@@ -102,9 +104,10 @@ TEST(ReebPerturbCli, OutputsAreCheckedBeforeAnyWork) {
   std::filesystem::copy_file(embedded_dataset_dir() / "cactus.off", dir / "m.off");
   const std::string mesh = read_file_bytes(dir / "m.off");
   const std::string perturb = std::string(REEB_BINARY) + " perturb " + shell_quoted(dir / "m.off") + " --scale 2 ";
-  for (const std::string& outputs : {"-o " + shell_quoted(dir / "m.off"),
-                                    "-o " + shell_quoted(dir / "v.off") + " --correspondence " + shell_quoted(dir / "m.off"),
-                                    "-o " + shell_quoted(dir / "v.off") + " --correspondence " + shell_quoted(dir / "v.off")}) {
+  for (const std::string& outputs :
+       {"-o " + shell_quoted(dir / "m.off"),
+        "-o " + shell_quoted(dir / "v.off") + " --correspondence " + shell_quoted(dir / "m.off"),
+        "-o " + shell_quoted(dir / "v.off") + " --correspondence " + shell_quoted(dir / "v.off")}) {
     const auto [status, out] = run_command(perturb + outputs + " 2>&1");
     EXPECT_EQ(status, 1) << outputs << "\n" << out;
     EXPECT_EQ(out.find("read and cleaned"), std::string::npos) << out;

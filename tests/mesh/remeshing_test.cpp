@@ -54,7 +54,9 @@ TEST(Remeshing, CorrespondenceMapsBackWithinAnEdge) {
   double longest = 0.0;
   for (Index t = 0; t < mesh.num_triangles(); ++t)
     for (int k = 0; k < 3; ++k)
-      longest = std::max(longest, (mesh.vertices.row(mesh.triangles(t, k)) - mesh.vertices.row(mesh.triangles(t, (k + 1) % 3))).norm());
+      longest = std::max(longest,
+                         (mesh.vertices.row(mesh.triangles(t, k)) - mesh.vertices.row(mesh.triangles(t, (k + 1) % 3)))
+                             .norm());
   RemeshOptions options;
   options.target_vertices = mesh.num_vertices();
   const MeshVariant out = remesh(mesh, options);
@@ -103,7 +105,8 @@ void expect_remesh_without_degenerate_triangles(const Mesh& mesh, const RemeshOp
   for (Index v = 0; v < out.mesh.num_vertices(); ++v) {
     const Vec3 p = out.mesh.vertices.row(v);
     ASSERT_LT(original.closest(p).distance, 1e-9 * d) << v;
-    ASSERT_GT((p - mesh.vertices.row(out.original_vertex[static_cast<std::size_t>(v)]).transpose()).norm(), 1e-9 * d) << v;
+    ASSERT_GT((p - mesh.vertices.row(out.original_vertex[static_cast<std::size_t>(v)]).transpose()).norm(), 1e-9 * d)
+        << v;
   }
 }
 

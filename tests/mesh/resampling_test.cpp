@@ -44,7 +44,8 @@ TEST(Resampling, EdgeVerticesLieOnTheirEdgeWithinTheJitter) {
   options.jitter = 0.0;
   const Mesh midpoints = resample_mesh(cube, options);
   const Vec3 m = midpoints.vertices.row(midpoints.triangles(3, 0));
-  EXPECT_TRUE(m.isApprox(0.5 * (cube.vertices.row(cube.triangles(0, 0)) + cube.vertices.row(cube.triangles(0, 1))).transpose()));
+  EXPECT_TRUE(m.isApprox(
+      0.5 * (cube.vertices.row(cube.triangles(0, 0)) + cube.vertices.row(cube.triangles(0, 1))).transpose()));
 }
 
 TEST(Resampling, SameSeedSameMeshOtherSeedOtherSampling) {

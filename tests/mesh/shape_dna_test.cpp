@@ -90,7 +90,8 @@ std::vector<double> torus_spectrum(double R, double r, int count, int cells = 60
       inv_sqrt_b(i) = 1 / std::sqrt(r * r * rho(v));
     }
     const Eigen::MatrixXd c = inv_sqrt_b.asDiagonal() * a * inv_sqrt_b.asDiagonal();
-    const Eigen::VectorXd values = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(c, Eigen::EigenvaluesOnly).eigenvalues();
+    const Eigen::VectorXd values =
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(c, Eigen::EigenvaluesOnly).eigenvalues();
     std::sort(all.begin(), all.end());
     if (static_cast<int>(all.size()) > count && values(0) > all[static_cast<std::size_t>(count)]) break;
     for (Eigen::Index k = 0; k < values.size() && k < count + 1; ++k) all.insert(all.end(), m == 0 ? 1 : 2, values(k));
@@ -125,7 +126,7 @@ TEST(ShapeDna, BoundaryGivesTheNeumannSpectrum) {
   for (int p = 0; p < 12; ++p)
     for (int q = 0; q < 12; ++q) exact.push_back(kPi * kPi * (p * p + q * q));
   std::sort(exact.begin(), exact.end());
-  exact.erase(exact.begin());    // the zero one
+  exact.erase(exact.begin());  // the zero one
   exact.resize(24);
   ShapeDnaOptions options;
   options.eigenvalues = 24;
@@ -149,7 +150,8 @@ TEST(ShapeDna, IsometricBendingKeepsTheSpectrum) {
     }
     ShapeDnaOptions options;
     options.eigenvalues = 20;
-    differences.push_back(max_relative_error(shape_dna(rolled, options).eigenvalues, shape_dna(flat, options).eigenvalues));
+    differences.push_back(
+        max_relative_error(shape_dna(rolled, options).eigenvalues, shape_dna(flat, options).eigenvalues));
   }
   EXPECT_LT(differences[0], 0.01);
   EXPECT_LT(differences[1], differences[0] / 3) << differences[0] << " then " << differences[1];
@@ -175,7 +177,8 @@ Mesh renumbered(const Mesh& mesh, std::uint64_t seed) {
   out.triangles.resize(mesh.num_triangles(), 3);
   for (Index t = 0; t < mesh.num_triangles(); ++t)
     for (int c = 0; c < 3; ++c)
-      out.triangles(t, c) = new_of[static_cast<std::size_t>(mesh.triangles(faces[static_cast<std::size_t>(t)], (c + t) % 3))];
+      out.triangles(t, c) =
+          new_of[static_cast<std::size_t>(mesh.triangles(faces[static_cast<std::size_t>(t)], (c + t) % 3))];
   return out;
 }
 

@@ -13,11 +13,11 @@ namespace {
 
 TEST(SurfaceCorrespondence, ClosestPointOnATriangleInEachRegion) {
   const Vec3 a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
-  EXPECT_TRUE(closest_point_on_triangle(Vec3(0.2, 0.2, 3), a, b, c).isApprox(Vec3(0.2, 0.2, 0)));   // face
-  EXPECT_TRUE(closest_point_on_triangle(Vec3(-1, -1, 1), a, b, c).isApprox(a));                       // corner
-  EXPECT_TRUE(closest_point_on_triangle(Vec3(0.5, -2, 0), a, b, c).isApprox(Vec3(0.5, 0, 0)));       // edge ab
-  EXPECT_TRUE(closest_point_on_triangle(Vec3(1, 1, 0), a, b, c).isApprox(Vec3(0.5, 0.5, 0)));        // edge bc
-  EXPECT_TRUE(closest_point_on_triangle(Vec3(3, 0.1, 0), a, b, c).isApprox(b));                       // corner
+  EXPECT_TRUE(closest_point_on_triangle(Vec3(0.2, 0.2, 3), a, b, c).isApprox(Vec3(0.2, 0.2, 0)));  // face
+  EXPECT_TRUE(closest_point_on_triangle(Vec3(-1, -1, 1), a, b, c).isApprox(a));                    // corner
+  EXPECT_TRUE(closest_point_on_triangle(Vec3(0.5, -2, 0), a, b, c).isApprox(Vec3(0.5, 0, 0)));     // edge ab
+  EXPECT_TRUE(closest_point_on_triangle(Vec3(1, 1, 0), a, b, c).isApprox(Vec3(0.5, 0.5, 0)));      // edge bc
+  EXPECT_TRUE(closest_point_on_triangle(Vec3(3, 0.1, 0), a, b, c).isApprox(b));                    // corner
 }
 
 // The grid only orders the search: every answer equals the brute-force one.
@@ -31,8 +31,10 @@ TEST(SurfaceCorrespondence, ClosestPointEqualsBruteForce) {
     double best = std::numeric_limits<double>::infinity();
     for (Index t = 0; t < mesh.num_triangles(); ++t)
       best = std::min(best, (closest_point_on_triangle(p, mesh.vertices.row(mesh.triangles(t, 0)),
-                                                      mesh.vertices.row(mesh.triangles(t, 1)),
-                                                      mesh.vertices.row(mesh.triangles(t, 2))) - p).norm());
+                                                       mesh.vertices.row(mesh.triangles(t, 1)),
+                                                       mesh.vertices.row(mesh.triangles(t, 2))) -
+                             p)
+                                .norm());
     const SurfacePoint s = locator.closest(p);
     EXPECT_NEAR(s.distance, best, 1e-12);
     EXPECT_NEAR((s.point - p).norm(), s.distance, 1e-12);

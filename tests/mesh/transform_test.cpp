@@ -40,7 +40,7 @@ TEST(Transform, TransformedScalesEveryDistance) {
     EXPECT_NEAR((out.vertices.row(v) - out.vertices.row(0)).norm(),
                 s.scale * (mesh.vertices.row(v) - mesh.vertices.row(0)).norm(), 1e-12);
   EXPECT_TRUE(out.vertices.row(0).transpose().isApprox(s.scale * s.rotation * mesh.vertices.row(0).transpose() +
-                                                         s.translation));
+                                                       s.translation));
 }
 
 // Similar copies of a shape with well-separated second moments, their
@@ -78,7 +78,7 @@ TEST(Transform, CanonicalCopyIsTheSameForEverySimilarCopy) {
 
 // The axes of a shape with a symmetry are ill-defined: a small axis_gap.
 TEST(Transform, CanonicalCopyReportsIllDefinedAxes) {
-  EXPECT_LT(canonical_copy(make_icosphere(3)).axis_gap, 1e-9);  // icosahedral symmetry: a multiple of the identity
+  EXPECT_LT(canonical_copy(make_icosphere(3)).axis_gap, 1e-9);   // icosahedral symmetry: a multiple of the identity
   EXPECT_LT(canonical_copy(make_torus(48, 16)).axis_gap, 1e-9);  // rotation symmetry about its axis
   // An 8 x 3 rectangle: second moments 64 / 12, 9 / 12 and 0, gaps 55 / 64 and 9 / 64.
   EXPECT_NEAR(canonical_copy(make_grid(8, 3)).axis_gap, 9.0 / 64.0, 1e-12);

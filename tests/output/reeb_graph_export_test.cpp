@@ -80,9 +80,8 @@ TEST(ReebGraphExport, JsonParsesWithEveryNodeEdgeAndSkeletonPoint) {
   }
   const MeshAnalysis& torus = components[1];
   std::ostringstream expected;
-  expected << "2 " << vertices << " " << triangles << " " << features << " " << nodes << " " << edges << " 1 "
-           << leaves << " " << leaves << " " << points << " 2 "
-           << torus.mesh.source_index(torus.features.vertices.back()) << " "
+  expected << "2 " << vertices << " " << triangles << " " << features << " " << nodes << " " << edges << " 1 " << leaves
+           << " " << leaves << " " << points << " 2 " << torus.mesh.source_index(torus.features.vertices.back()) << " "
            << components[0].reeb.num_nodes() + torus.reeb.edges.back()[1];
   // The timings are rounded by Python: compare them as numbers.
   std::istringstream got(output);
@@ -93,7 +92,7 @@ TEST(ReebGraphExport, JsonParsesWithEveryNodeEdgeAndSkeletonPoint) {
   EXPECT_EQ(line.substr(0, cut), expected.str());
   EXPECT_NEAR(std::stod(line.substr(cut + 1)), time, 1e-5);
   EXPECT_EQ(leaves, 5 + std::count_if(torus.reeb.nodes.begin(), torus.reeb.nodes.end(),
-                                 [](const ReebNode& n) { return n.end == NodeType::Termination; }));
+                                      [](const ReebNode& n) { return n.end == NodeType::Termination; }));
 }
 
 TEST(ReebGraphExport, PlyHoldsTheSegmentation) {
@@ -114,7 +113,8 @@ TEST(ReebGraphExport, PlyHoldsTheSegmentation) {
       EXPECT_EQ(Vec3(soup.vertices.row(first_vertex + v)), Vec3(r->mesh.vertices.row(v)));
     }
   }
-  if (!std::filesystem::exists(kPython)) GTEST_SKIP() << kPython << " not found: the node and fq properties are unchecked";
+  if (!std::filesystem::exists(kPython))
+    GTEST_SKIP() << kPython << " not found: the node and fq properties are unchecked";
   // The scalar properties, read by numpy from the binary body.
   const std::string output = run_python(
       "import sys, numpy as np\n"
@@ -209,7 +209,8 @@ TEST(ReebGraphExport, ObjDrawsTheGraphAndAConnectedSkeleton) {
   };
   for (const std::vector<Index>& polyline : obj.lines[1]) {
     ASSERT_GE(polyline.size(), 2u);
-    for (const Index i : polyline) ASSERT_TRUE(i > static_cast<Index>(nodes) && i <= static_cast<Index>(expected.size()));
+    for (const Index i : polyline)
+      ASSERT_TRUE(i > static_cast<Index>(nodes) && i <= static_cast<Index>(expected.size()));
     for (std::size_t k = 1; k < polyline.size(); ++k)
       parent[find(static_cast<std::size_t>(polyline[k]) - nodes - 1)] =
           find(static_cast<std::size_t>(polyline[0]) - nodes - 1);

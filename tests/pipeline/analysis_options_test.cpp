@@ -80,16 +80,25 @@ TEST(AnalysisOptions, DifferencesListEveryChangedOptionInTableOrderWithBothValue
 }
 
 TEST(AnalysisOptions, RejectsUnknownNamesWrongKindsAndBadValues) {
-  EXPECT_NE(thrown_message<InvalidArgument>([] { analysis_options_from({{"epsilom", 0.1}}); }).find("unknown analysis option 'epsilom'"),
+  EXPECT_NE(thrown_message<InvalidArgument>([] {
+              analysis_options_from({{"epsilom", 0.1}});
+            }).find("unknown analysis option 'epsilom'"),
             std::string::npos);
-  const std::string kind = thrown_message<InvalidArgument>([] { analysis_options_from({{"epsilon", std::string("wide")}}); });
+  const std::string kind = thrown_message<InvalidArgument>([] {
+    analysis_options_from({{"epsilon", std::string("wide")}});
+  });
   EXPECT_NE(kind.find("epsilon: expected number, got text 'wide'"), std::string::npos) << kind;
-  EXPECT_NE(thrown_message<InvalidArgument>([] { analysis_options_from({{"start_vertex", 1.5}}); }).find("start_vertex"),
+  EXPECT_NE(thrown_message<InvalidArgument>([] {
+              analysis_options_from({{"start_vertex", 1.5}});
+            }).find("start_vertex"),
             std::string::npos);
-  const std::string range = thrown_message<InvalidArgument>([] { analysis_options_from({{"start_vertex", std::int64_t{1} << 40}}); });
+  const std::string range = thrown_message<InvalidArgument>([] {
+    analysis_options_from({{"start_vertex", std::int64_t{1} << 40}});
+  });
   EXPECT_NE(range.find("start_vertex: 1099511627776 is out of range"), std::string::npos) << range;
-  EXPECT_NE(thrown_message<InvalidArgument>([] { analysis_options_from({{"geodesic", std::string("heat")}}); })
-                .find("unknown geodesic method 'heat'"),
+  EXPECT_NE(thrown_message<InvalidArgument>([] {
+              analysis_options_from({{"geodesic", std::string("heat")}});
+            }).find("unknown geodesic method 'heat'"),
             std::string::npos);
 }
 

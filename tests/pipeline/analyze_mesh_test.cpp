@@ -32,9 +32,7 @@ TEST(AnalyzeMesh, StarGivesOneRootAndALeafPerArm) {
   EXPECT_DOUBLE_EQ(a.timings.total(), a.timings.graph + a.timings.features + a.timings.quotient + a.timings.reeb);
 }
 
-TEST(AnalyzeMesh, TorusGraphHasOneCycle) {
-  EXPECT_EQ(analyze_mesh(make_torus(60, 20)).reeb.independent_cycles(), 1);
-}
+TEST(AnalyzeMesh, TorusGraphHasOneCycle) { EXPECT_EQ(analyze_mesh(make_torus(60, 20)).reeb.independent_cycles(), 1); }
 
 TEST(AnalyzeMesh, CanStopAfterTheQuotientFunction) {
   AnalysisOptions options;
@@ -62,9 +60,9 @@ void expect_similarity_invariant(const Mesh& mesh) {
     EXPECT_EQ(sorted(moved.features.vertices), sorted(reference.features.vertices)) << "seed " << seed;
     EXPECT_EQ(moved.reeb.num_nodes(), reference.reeb.num_nodes()) << "seed " << seed;
     EXPECT_EQ(moved.reeb.edges, reference.reeb.edges) << "seed " << seed;
-    const auto differing = std::inner_product(
-        moved.reeb.vertex_node.begin(), moved.reeb.vertex_node.end(), reference.reeb.vertex_node.begin(), 0,
-        std::plus<>(), [](Index a, Index b) { return a != b ? 1 : 0; });
+    const auto differing = std::inner_product(moved.reeb.vertex_node.begin(), moved.reeb.vertex_node.end(),
+                                              reference.reeb.vertex_node.begin(), 0, std::plus<>(),
+                                              [](Index a, Index b) { return a != b ? 1 : 0; });
     EXPECT_EQ(differing, 0) << "seed " << seed << ": vertices in another region";
   }
 }

@@ -125,7 +125,8 @@ TEST(ReebOptionsCli, AMatchingOptionOutOfItsRangeIsRefusedBeforeAnyMeshIsRead) {
   const std::string cow = shell_quoted(embedded_dataset_dir() / "cow.off");
   for (const std::string option : {"--structure-weight -100", "--unmatched-cost -5", "--unmatched-cost 0",
                                    "--attribute-weight nan", "--profile-weight inf", "--refine-rounds -1"}) {
-    const auto [status, out] = run_command(std::string(REEB_BINARY) + " match " + cow + " " + cow + " " + option + " 2>&1");
+    const auto [status, out] =
+        run_command(std::string(REEB_BINARY) + " match " + cow + " " + cow + " " + option + " 2>&1");
     EXPECT_EQ(status, 1) << option << "\n" << out;
     const std::string name = option.substr(2, option.find(' ') - 2);
     std::string field = name;
@@ -142,7 +143,8 @@ TEST(ReebOptionsCli, AMissingArgumentIsNamedAsTheUsageNamesItAndAnEmptyValueIsRe
   const auto [missing, missing_out] = run_command(reeb + " features 2>&1");
   EXPECT_EQ(missing, 2) << missing_out;
   EXPECT_NE(missing_out.find("reeb features: the argument MESH is missing"), std::string::npos) << missing_out;
-  const auto [second, second_out] = run_command(reeb + " match " + shell_quoted(embedded_dataset_dir() / "cow.off") + " 2>&1");
+  const auto [second, second_out] =
+      run_command(reeb + " match " + shell_quoted(embedded_dataset_dir() / "cow.off") + " 2>&1");
   EXPECT_EQ(second, 2) << second_out;
   EXPECT_NE(second_out.find("the argument B is missing"), std::string::npos) << second_out;
   const auto [empty, empty_out] =

@@ -48,7 +48,8 @@ Mesh with_holes_of(const Mesh& closed, const Mesh& holed) {
   Index n = 0;
   for (Index t = 0; t < closed.num_triangles(); ++t) {
     int on_boundary = 0;
-    for (int k = 0; k < 3; ++k) on_boundary += graph.ring[static_cast<std::size_t>(closed.triangles(t, k))] != RingKind::Closed;
+    for (int k = 0; k < 3; ++k)
+      on_boundary += graph.ring[static_cast<std::size_t>(closed.triangles(t, k))] != RingKind::Closed;
     if (on_boundary < 3) out.triangles.row(n++) = closed.triangles.row(t);
   }
   out.triangles.conservativeResize(n, 3);
@@ -64,7 +65,8 @@ TEST(ToscaHoles, HolesDoNotChangeTheGraphOfAPose) {
     ASSERT_GT(analyze_topology(punched).boundary_edges, 0) << name;
     const ReebGraph reference = analyze_mesh(closed).reeb;
     const ReebGraph filled = analyze_mesh(punched).reeb;
-    EXPECT_EQ(filled.leaf_count(), reference.leaf_count()) << name << ": " << summary(filled) << " vs " << summary(reference);
+    EXPECT_EQ(filled.leaf_count(), reference.leaf_count())
+        << name << ": " << summary(filled) << " vs " << summary(reference);
     EXPECT_EQ(filled.independent_cycles(), reference.independent_cycles()) << name;
   }
 }

@@ -101,8 +101,10 @@ TEST(ReebGenusOracle, HoledPlatesOfGenusOneToEight) {
 // splits and merges again at it continues as one line but closes a cycle.
 // The contour lines count every one; Definition 6 does not.
 TEST(ReebGenusOracle, RandomFunctionsUnfoldDegenerateSaddles) {
-  const std::vector<std::pair<Mesh, int>> surfaces = {
-      {make_icosphere(3), 0}, {make_torus(30, 12), 1}, {make_holed_plate(2, 2), 2}, {make_holed_plate(5, 2), 5}};
+  const std::vector<std::pair<Mesh, int>> surfaces = {{make_icosphere(3), 0},
+                                                      {make_torus(30, 12), 1},
+                                                      {make_holed_plate(2, 2), 2},
+                                                      {make_holed_plate(5, 2), 5}};
   Index unfolded = 0, paper_wrong = 0;
   for (const auto& [mesh, genus] : surfaces) {
     const MeshGraph graph = build_mesh_graph(mesh);

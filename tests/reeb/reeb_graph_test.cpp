@@ -44,8 +44,10 @@ TEST(ReebGraph, LeavesAreTheNodesEndingInATermination) {
   EXPECT_EQ(graph_with(0, {}).leaf_count(), 0);
   // The torus graph: only node 4 ends in a termination.
   ReebGraph torus = graph_with(5, {{0, 1}, {0, 2}, {1, 3}, {2, 3}, {3, 4}});
-  for (const auto& [node, end] : {std::pair{0, NodeType::Bifurcation}, {1, NodeType::Junction},
-                                  {2, NodeType::Junction}, {3, NodeType::Bifurcation}})
+  for (const auto& [node, end] : {std::pair{0, NodeType::Bifurcation},
+                                  {1, NodeType::Junction},
+                                  {2, NodeType::Junction},
+                                  {3, NodeType::Bifurcation}})
     torus.nodes[node].end = end;
   EXPECT_EQ(torus.leaf_count(), 1);
   torus.nodes[3].end = NodeType::Termination;
@@ -266,9 +268,8 @@ TEST(Skeleton, RunsAlongTheAxisOfEachStarArm) {
     if (node.end != NodeType::Termination) continue;
     const std::vector<Vec3>& points = node.skeleton;
     ASSERT_GE(points.size(), 10u);
-    const auto tip = std::find_if(features.begin(), features.end(), [&](Index v) {
-      return (Vec3(mesh.vertices.row(v)) - points.back()).norm() < 1e-12;
-    });
+    const auto tip = std::find_if(features.begin(), features.end(),
+                                  [&](Index v) { return (Vec3(mesh.vertices.row(v)) - points.back()).norm() < 1e-12; });
     ASSERT_NE(tip, features.end()) << "the leaf does not end at a feature point";
     const auto tip_edges = graph.length.begin() + graph.offset[*tip];
     const double slack = *std::max_element(tip_edges, tip_edges + graph.degree(*tip));
@@ -303,11 +304,14 @@ TEST(Skeleton, ThinnedToOnePointPerLevelOfF) {
     ReebOptions options;
     options.skeleton_levels = levels;
     const ReebGraph g = build_reeb_graph(in.mesh, in.graph, in.fq, options);
-    const auto level = [&](double x) { return std::min(static_cast<Index>((x - *lo) / (*hi - *lo) * levels), levels - 1); };
+    const auto level = [&](double x) {
+      return std::min(static_cast<Index>((x - *lo) / (*hi - *lo) * levels), levels - 1);
+    };
     for (std::size_t n = 0; n < g.nodes.size(); ++n) {
       const ReebNode& node = g.nodes[n];
       const Index span = level(node.fq_max) - level(in.fq[static_cast<std::size_t>(node.birth_vertex)]);
-      EXPECT_LE(node.skeleton.size(), static_cast<std::size_t>(std::max(span, 0) + 2)) << levels << " levels, node " << n;
+      EXPECT_LE(node.skeleton.size(), static_cast<std::size_t>(std::max(span, 0) + 2))
+          << levels << " levels, node " << n;
     }
   }
 }

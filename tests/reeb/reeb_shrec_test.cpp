@@ -65,10 +65,12 @@ TEST(ReebShrec, CyclesEqualGenusAndLeavesEndAtFeaturePoints) {
       Index last = kInvalidIndex;
       for (Index v = 0; v < a.mesh.num_vertices(); ++v)
         if (a.reeb.vertex_node[static_cast<std::size_t>(v)] == static_cast<Index>(n) &&
-            (last == kInvalidIndex || a.fq.value[static_cast<std::size_t>(v)] > a.fq.value[static_cast<std::size_t>(last)]))
+            (last == kInvalidIndex ||
+             a.fq.value[static_cast<std::size_t>(v)] > a.fq.value[static_cast<std::size_t>(last)]))
           last = v;
       bool higher_outside = false;
-      for (Index i = a.graph.offset[static_cast<std::size_t>(last)]; i < a.graph.offset[static_cast<std::size_t>(last) + 1]; ++i) {
+      for (Index i = a.graph.offset[static_cast<std::size_t>(last)];
+           i < a.graph.offset[static_cast<std::size_t>(last) + 1]; ++i) {
         const Index w = a.graph.neighbor[static_cast<std::size_t>(i)];
         higher_outside |= a.fq.value[static_cast<std::size_t>(w)] > a.fq.value[static_cast<std::size_t>(last)] &&
                           a.reeb.vertex_node[static_cast<std::size_t>(w)] != static_cast<Index>(n);

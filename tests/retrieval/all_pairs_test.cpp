@@ -1,9 +1,9 @@
 // All-pairs distances: every entry is match_graphs of its pair, zero
 // diagonal, symmetric, failed entries at kFailedEntryDistance, the same
 // matrix with 1 and 2 threads; rows in .cla order.
+#include "reebkit/retrieval/all_pairs.h"
 #include "io/io_test_util.h"
 #include "reebkit/core/error.h"
-#include "reebkit/retrieval/all_pairs.h"
 #include "retrieval/retrieval_test_util.h"
 
 #include <gtest/gtest.h>

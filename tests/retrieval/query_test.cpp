@@ -1,9 +1,9 @@
 // Query by example: with candidates >= the collection size the ranking is
 // brute force (match_graphs against every entry); with fewer it reranks
 // exactly the nearest signatures; failed entries never come back.
+#include "reebkit/retrieval/query.h"
 #include "io/io_test_util.h"
 #include "reebkit/core/error.h"
-#include "reebkit/retrieval/query.h"
 #include "retrieval/retrieval_test_util.h"
 
 #include <gtest/gtest.h>

@@ -48,7 +48,7 @@ TEST(ReebRetrievalCli, DistancesAndQueryOnTheEmbeddedCollection) {
                                   "limbs 0 4\nhand\nelk\neight\ncactus\n";
   const auto [computed, distances_out] =
       run_command(reeb + " distances " + collection_file + " -o " + shell_quoted(dir / "d.matrix") + " --cla " +
-          shell_quoted(dir / "c.cla") + " --ascii " + shell_quoted(dir / "d.txt") + " --threads 2 2>&1");
+                  shell_quoted(dir / "c.cla") + " --ascii " + shell_quoted(dir / "d.txt") + " --threads 2 2>&1");
   ASSERT_EQ(computed, 0) << distances_out;
   const PairwiseDistances want =
       all_pairs_distances(collection, matrix_rows(collection, read_psb_classes(dir / "c.cla")));
@@ -83,8 +83,7 @@ TEST(ReebRetrievalCli, DistancesAndQueryOnTheEmbeddedCollection) {
   const auto index = collection.find("elk.off");
   ASSERT_TRUE(index);
   std::vector<std::string> ranked;
-  for (const QueryResult& r : query_collection(collection, collection.entry(*index), options))
-    ranked.push_back(r.name);
+  for (const QueryResult& r : query_collection(collection, collection.entry(*index), options)) ranked.push_back(r.name);
   EXPECT_EQ(ranked.front(), "elk.off");  // d(G, G) = 0
   const auto [by_name, by_name_out] = run_command(reeb + " query " + collection_file + " elk.off -k 4 --json");
   ASSERT_EQ(by_name, 0) << by_name_out;
@@ -106,9 +105,9 @@ TEST(ReebRetrievalCli, DistancesAndQueryOnTheEmbeddedCollection) {
 
   // A class file naming a mesh the collection lacks.
   std::ofstream(dir / "bad.cla") << "PSB 1\n1 2\nround 0 2\nhelmet\nsphere\n";
-  const auto [bad, bad_out] = run_command(reeb + " distances " + collection_file + " -o " +
-                                          shell_quoted(dir / "x.matrix") + " --cla " + shell_quoted(dir / "bad.cla") +
-                                          " 2>&1");
+  const auto [bad, bad_out] =
+      run_command(reeb + " distances " + collection_file + " -o " + shell_quoted(dir / "x.matrix") + " --cla " +
+                  shell_quoted(dir / "bad.cla") + " 2>&1");
   EXPECT_EQ(bad, 1);
   EXPECT_NE(bad_out.find("model 'sphere' of class 'round' is not in the collection"), std::string::npos) << bad_out;
 }
@@ -196,8 +195,8 @@ TEST(ReebRetrievalCli, DistancesFollowTheClassFileTheCollectionWasIndexedWith) {
       " --threads 2");
   std::filesystem::create_directories(dir / "implicit");
   std::filesystem::create_directories(dir / "explicit");
-  const std::string implicit = run("distances " + shell_quoted(dir / "c.h5") + " -o " +
-                                   shell_quoted(dir / "implicit" / "d.matrix"));
+  const std::string implicit =
+      run("distances " + shell_quoted(dir / "c.h5") + " -o " + shell_quoted(dir / "implicit" / "d.matrix"));
   EXPECT_NE(implicit.find("rows in the .cla order of " + cla.string()), std::string::npos) << implicit;
   const std::string explicit_out = run("distances " + shell_quoted(dir / "c.h5") + " -o " +
                                        shell_quoted(dir / "explicit" / "d.matrix") + " --cla " + shell_quoted(cla));
@@ -212,7 +211,8 @@ TEST(ReebRetrievalCli, DistancesFollowTheClassFileTheCollectionWasIndexedWith) {
 
   // Without classes: collection order, which that .cla would misread.
   run("index " + shell_quoted(datasets) + " -o " + shell_quoted(dir / "plain.h5") + " --threads 2");
-  const std::string plain = run("distances " + shell_quoted(dir / "plain.h5") + " -o " + shell_quoted(dir / "p.matrix"));
+  const std::string plain =
+      run("distances " + shell_quoted(dir / "plain.h5") + " -o " + shell_quoted(dir / "p.matrix"));
   EXPECT_NE(plain.find("rows in the collection order\n"), std::string::npos) << plain;
   EXPECT_FALSE(read_psb_matrix(dir / "p.matrix") == read_psb_matrix(dir / "explicit" / "d.matrix"));
 

@@ -1,7 +1,7 @@
 // The signature index returns the exact nearest neighbours: the same rows,
 // distances and order as a brute-force scan sorted by (distance, row).
-#include "reebkit/core/error.h"
 #include "reebkit/retrieval/signature_index.h"
+#include "reebkit/core/error.h"
 
 #include <gtest/gtest.h>
 

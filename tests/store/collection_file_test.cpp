@@ -150,8 +150,9 @@ TEST(CollectionFile, RoundTripFieldByField) {
   // The named options come back typed (in the file's attribute order: by name).
   std::map<std::string, OptionValue> options;
   for (const NamedOption& o : reader.provenance().analysis_options) options.emplace(o.name, o.value);
-  EXPECT_EQ(options, (std::map<std::string, OptionValue>{
-                         {"epsilon", 0.05}, {"geodesic", std::string("fmm")}, {"start_vertex", std::int64_t{-7}}}));
+  EXPECT_EQ(options, (std::map<std::string, OptionValue>{{"epsilon", 0.05},
+                                                         {"geodesic", std::string("fmm")},
+                                                         {"start_vertex", std::int64_t{-7}}}));
   // The classes in their .cla order, an empty one too.
   ASSERT_EQ(reader.provenance().classes.size(), 3u);
   for (std::size_t c = 0; c < 3; ++c) {
@@ -225,7 +226,8 @@ TEST(CollectionFile, ErrorsNameTheFile) {
   test::write_bytes(text, "not HDF5 at all\n");
   const std::string not_hdf5 = test::thrown_message<Error>([&] { CollectionReader r(text); });
   EXPECT_TRUE(contains(not_hdf5, text.string()) && contains(not_hdf5, "not an HDF5 file")) << not_hdf5;
-  EXPECT_TRUE(contains(test::thrown_message<Error>([&] { CollectionWriter w(text, test_provenance(), true); }), text.string()));
+  EXPECT_TRUE(
+      contains(test::thrown_message<Error>([&] { CollectionWriter w(text, test_provenance(), true); }), text.string()));
 
   const auto other = dir / "other.h5";
   {
@@ -245,7 +247,8 @@ TEST(CollectionFile, ErrorsNameTheFile) {
       file.openAttribute("layout").write(H5::PredType::NATIVE_INT, &version);
     }
     const std::string layout = test::thrown_message<Error>([&] { CollectionReader r(other_layout); });
-    EXPECT_TRUE(contains(layout, other_layout.string()) && contains(layout, "layout version " + std::to_string(version)) &&
+    EXPECT_TRUE(contains(layout, other_layout.string()) &&
+                contains(layout, "layout version " + std::to_string(version)) &&
                 contains(layout, "re-index the meshes with this version"))
         << layout;
   }
@@ -388,8 +391,10 @@ template <typename T>
 std::vector<T> parse(const std::vector<std::string>& cells) {
   std::vector<T> out;
   for (const std::string& c : cells) {
-    if constexpr (std::is_floating_point_v<T>) out.push_back(std::stod(c));
-    else out.push_back(static_cast<T>(std::stoll(c)));
+    if constexpr (std::is_floating_point_v<T>)
+      out.push_back(std::stod(c));
+    else
+      out.push_back(static_cast<T>(std::stoll(c)));
   }
   return out;
 }
@@ -641,7 +646,7 @@ TEST(CollectionFile, VerbosePrintsTheHdf5ErrorStack) {
 /// The byte ranges [first, last) of the chunks of the datasets `names` in
 /// the collection file `path`, as stored (compressed).
 std::vector<std::pair<std::size_t, std::size_t>> chunk_ranges(const std::filesystem::path& path,
-                                                               const std::vector<std::string>& names) {
+                                                              const std::vector<std::string>& names) {
   std::vector<std::pair<std::size_t, std::size_t>> ranges;
   const H5::H5File file(path.string(), H5F_ACC_RDONLY);
   for (const std::string& name : names) {

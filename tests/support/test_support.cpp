@@ -18,9 +18,7 @@ std::filesystem::path fixture_dir() { return REEBKIT_TEST_DATA_DIR; }
 
 std::filesystem::path fixture(const std::string& name) { return fixture_dir() / name; }
 
-std::filesystem::path embedded_dataset_dir() {
-  return std::filesystem::path(REEBKIT_SOURCE_DIR) / "datasets";
-}
+std::filesystem::path embedded_dataset_dir() { return std::filesystem::path(REEBKIT_SOURCE_DIR) / "datasets"; }
 
 std::optional<std::filesystem::path> shared_dataset(const std::string& folder) {
   const std::filesystem::path unpacked = std::filesystem::path(REEBKIT_UNPACKED_DATASETS) / folder;
@@ -88,7 +86,8 @@ Mesh make_capsule(double r, double half_length, int sides, int cap_rings) {
     const double theta = 0.5 * static_cast<double>(EIGEN_PI) * j / cap_rings;
     rings.emplace_back(r * std::sin(theta), -half_length - r * std::cos(theta));
   }
-  const int cylinder = static_cast<int>(std::lround(2.0 * half_length * sides / (2.0 * static_cast<double>(EIGEN_PI) * r)));
+  const int cylinder =
+      static_cast<int>(std::lround(2.0 * half_length * sides / (2.0 * static_cast<double>(EIGEN_PI) * r)));
   for (int j = 1; j < cylinder; ++j) rings.emplace_back(r, -half_length + 2.0 * half_length * j / cylinder);
   for (int j = cap_rings; j >= 1; --j) {
     const double theta = 0.5 * static_cast<double>(EIGEN_PI) * j / cap_rings;
@@ -119,7 +118,8 @@ Mesh make_capsule(double r, double half_length, int sides, int cap_rings) {
 
 Mesh renumbered(const Mesh& mesh, const std::vector<Index>& to) {
   Mesh out = mesh;
-  for (Index v = 0; v < mesh.num_vertices(); ++v) out.vertices.row(to[static_cast<std::size_t>(v)]) = mesh.vertices.row(v);
+  for (Index v = 0; v < mesh.num_vertices(); ++v)
+    out.vertices.row(to[static_cast<std::size_t>(v)]) = mesh.vertices.row(v);
   for (Index t = 0; t < mesh.num_triangles(); ++t)
     for (int k = 0; k < 3; ++k) out.triangles(t, k) = to[static_cast<std::size_t>(mesh.triangles(t, k))];
   return out;

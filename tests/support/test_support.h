@@ -77,11 +77,10 @@ Mesh renumbered(const Mesh& mesh, const std::vector<Index>& to);
 
 /// Binds `var` to the unpacked shared dataset `folder`, or skips the test with
 /// a message saying which folder is missing.
-#define REEBKIT_REQUIRE_DATASET(var, folder)                                             \
-  const auto var##_opt = ::reebkit::test::shared_dataset(folder);                        \
-  if (!var##_opt) {                                                                      \
-    GTEST_SKIP() << "shared dataset '" << folder << "' not found (expected "             \
-                 << REEBKIT_SHARED_DATASETS << " unpacked into " << REEBKIT_UNPACKED_DATASETS \
-                 << "); skipping";                                                       \
-  }                                                                                      \
+#define REEBKIT_REQUIRE_DATASET(var, folder)                                                            \
+  const auto var##_opt = ::reebkit::test::shared_dataset(folder);                                       \
+  if (!var##_opt) {                                                                                     \
+    GTEST_SKIP() << "shared dataset '" << folder << "' not found (expected " << REEBKIT_SHARED_DATASETS \
+                 << " unpacked into " << REEBKIT_UNPACKED_DATASETS << "); skipping";                    \
+  }                                                                                                     \
   const std::filesystem::path var = *var##_opt

@@ -49,9 +49,8 @@ po::options_description table_options(const char* title, const std::vector<Optio
 
 }  // namespace
 
-bool parse(const std::vector<std::string>& args, const std::string& usage,
-           const po::options_description& options, const po::positional_options_description& positional,
-           po::variables_map& vm) {
+bool parse(const std::vector<std::string>& args, const std::string& usage, const po::options_description& options,
+           const po::positional_options_description& positional, po::variables_map& vm) {
   po::options_description all(options);
   all.add_options()("help,h", "show this help")("verbose", "on a failure of HDF5, also print its error stack");
   po::store(po::command_line_parser(args).options(all).positional(positional).run(), vm);

@@ -32,9 +32,8 @@ const std::vector<Command>& commands();
 /// values are shown as the library writes them (shortest exact form).
 /// Every command also takes --verbose: a failure of HDF5 then prints HDF5's
 /// error stack too (print_hdf5_error_stacks).
-bool parse(const std::vector<std::string>& args, const std::string& usage,
-           const po::options_description& options, const po::positional_options_description& positional,
-           po::variables_map& vm);
+bool parse(const std::vector<std::string>& args, const std::string& usage, const po::options_description& options,
+           const po::positional_options_description& positional, po::variables_map& vm);
 
 /// The options of the analysis of a mesh: one flag per analysis option
 /// (pipeline/analysis_options.h; --min-persistence for min_persistence),

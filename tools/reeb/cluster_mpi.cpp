@@ -163,8 +163,8 @@ void serve_inputs(InputQueue& queue, int others) {
     std::vector<std::int64_t> answer;  // the inputs; none: none left
     for (const std::size_t input : queue.take_chunk()) answer.push_back(static_cast<std::int64_t>(input));
     MPI_Request send;
-    MPI_Isend(answer.data(), static_cast<int>(answer.size()), MPI_INT64_T, status.MPI_SOURCE, kTagInput,
-              MPI_COMM_WORLD, &send);
+    MPI_Isend(answer.data(), static_cast<int>(answer.size()), MPI_INT64_T, status.MPI_SOURCE, kTagInput, MPI_COMM_WORLD,
+              &send);
     wait(send);
   }
 }
@@ -186,7 +186,8 @@ class InputRequests {
       wait(first.receive, &status);
       int count = 0;
       MPI_Get_count(&status, MPI_INT64_T, &count);
-      for (int k = 0; k < count; ++k) ready_.push_back(static_cast<std::size_t>(first.answer[static_cast<std::size_t>(k)]));
+      for (int k = 0; k < count; ++k)
+        ready_.push_back(static_cast<std::size_t>(first.answer[static_cast<std::size_t>(k)]));
       out_.pop_front();
       if (count == 0) exhausted_ = true;  // the requests still out get the same answer
       if (!exhausted_) post();
@@ -241,7 +242,8 @@ class Stopwatch {
  public:
   /// `count` things done since construction: {count, wall s, CPU s}.
   std::vector<double> share(std::int64_t count) const {
-    return {static_cast<double>(count), wall_.elapsed() / 1000, static_cast<double>(std::clock() - cpu_) / CLOCKS_PER_SEC};
+    return {static_cast<double>(count), wall_.elapsed() / 1000,
+            static_cast<double>(std::clock() - cpu_) / CLOCKS_PER_SEC};
   }
 
  private:
@@ -293,8 +295,8 @@ std::optional<ExtractionSummary> extract_collection_on_cluster(const std::vector
     const Stopwatch stopwatch;
     if (mpi.rank() != 0) {
       InputRequests requests(options.threads > 0 ? options.threads : omp_get_max_threads());
-      const ExtractionSummary done =
-          extract_shard(inputs, classes, shard, [&requests] { return requests(); }, shard_options);
+      const ExtractionSummary done = extract_shard(
+          inputs, classes, shard, [&requests] { return requests(); }, shard_options);
       requests.finish();
       mpi.gather(stopwatch.share(done.computed()));  // its shard is closed
       return std::nullopt;
@@ -306,7 +308,8 @@ std::optional<ExtractionSummary> extract_collection_on_cluster(const std::vector
     ExtractionSummary done;
     std::thread compute([&] {
       try {
-        done = extract_shard(inputs, classes, shard, [&queue] { return queue.take(); }, shard_options);
+        done = extract_shard(
+            inputs, classes, shard, [&queue] { return queue.take(); }, shard_options);
       } catch (...) {
         failure = std::current_exception();
       }

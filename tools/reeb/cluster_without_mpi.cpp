@@ -7,16 +7,16 @@ namespace reebkit::cli {
 namespace {
 
 [[noreturn]] void refuse() {
-  throw Error("started by an MPI launcher, but this reeb was built without MPI (configure with -DREEBKIT_MPI=ON, "
-              "Debian packages libopenmpi-dev openmpi-bin; docs/cluster.md)");
+  throw Error(
+      "started by an MPI launcher, but this reeb was built without MPI (configure with -DREEBKIT_MPI=ON, "
+      "Debian packages libopenmpi-dev openmpi-bin; docs/cluster.md)");
 }
 
 }  // namespace
 
 std::optional<ExtractionSummary> extract_collection_on_cluster(const std::vector<MeshInput>&,
                                                                const std::vector<PsbClass>&,
-                                                               const std::filesystem::path&,
-                                                               const ExtractionOptions&) {
+                                                               const std::filesystem::path&, const ExtractionOptions&) {
   refuse();
 }
 

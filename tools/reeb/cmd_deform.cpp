@@ -26,8 +26,8 @@ void list_nodes(const ReebGraph& g) {
     const ReebNode& node = g.nodes[static_cast<std::size_t>(n)];
     std::cout << "  " << std::setw(4) << n << "  " << std::left << std::setw(12) << node_type_name(node.type) << " "
               << std::setw(12) << node_type_name(node.end) << std::right << " " << std::setw(8) << node.vertex_count
-              << "  " << std::fixed << std::setprecision(3) << node.fq_min << "-" << node.fq_max
-              << std::defaultfloat << std::setprecision(6) << "    " << node.barycenter << "\n";
+              << "  " << std::fixed << std::setprecision(3) << node.fq_min << "-" << node.fq_max << std::defaultfloat
+              << std::setprecision(6) << "    " << node.barycenter << "\n";
   }
   std::cout << "edges:";
   for (const auto& [a, b] : g.edges) std::cout << " " << a << "->" << b;
@@ -59,16 +59,18 @@ int run_deform(const std::vector<std::string>& args) {
   std::string mesh_path, out_path;
   DeformOptions deform;
   std::vector<double> axis;
-  options.add_options()
-      ("mesh", po::value(&mesh_path)->required(), "mesh file (.off .obj .ply .stl)")
-      ("node", po::value(&deform.node), "Reeb graph node whose component turns (omit to list the nodes)")
-      ("angle", po::value(&deform.angle_degrees)->default_value(deform.angle_degrees), "rotation angle, degrees")
-      ("axis", po::value(&axis)->multitoken(),
-       "rotation axis x y z (default: from the geometry, positive angles fold the component towards the root)")
-      ("falloff", po::value(&deform.falloff)->default_value(deform.falloff),
-       "fraction of the component's extent over which the rotation ramps up from 0, in [0, 1]")
-      ("output,o", po::value(&out_path),
-       "write the posed mesh (.off or .ply): the analyzed mesh, i.e. cleaned, small holes filled (new vertices last)");
+  options.add_options()("mesh", po::value(&mesh_path)->required(), "mesh file (.off .obj .ply .stl)")(
+      "node", po::value(&deform.node),
+      "Reeb graph node whose component turns (omit to list the nodes)")("angle",
+                                                                        po::value(&deform.angle_degrees)
+                                                                            ->default_value(deform.angle_degrees),
+                                                                        "rotation angle, degrees")(
+      "axis", po::value(&axis)->multitoken(),
+      "rotation axis x y z (default: from the geometry, positive angles fold the component towards the root)")(
+      "falloff", po::value(&deform.falloff)->default_value(deform.falloff),
+      "fraction of the component's extent over which the rotation ramps up from 0, in [0, 1]")(
+      "output,o", po::value(&out_path),
+      "write the posed mesh (.off or .ply): the analyzed mesh, i.e. cleaned, small holes filled (new vertices last)");
   po::positional_options_description positional;
   positional.add("mesh", 1);
   po::variables_map vm;

@@ -50,14 +50,15 @@ int run_distances(const std::vector<std::string>& args) {
   po::options_description options("options");
   std::string path, output, classes_path, ascii;
   AllPairsOptions all_pairs;
-  options.add_options()
-      ("collection", po::value(&path)->required(), "collection file written by reeb index")
-      ("output,o", po::value(&output)->required(), "PSB binary matrix to write (float32, N x N, row-major)")
-      ("cla", po::value(&classes_path),
-       "rows in the order of the models of this PSB .cla file (default: the .cla the collection was indexed "
-       "with, else collection order, every mesh)")
-      ("ascii", po::value(&ascii), "also write the SHREC ASCII matrix (N lines of N numbers)")
-      ("threads", po::value(&all_pairs.threads)->default_value(0), "threads (0: as many as OpenMP offers)");
+  options
+      .add_options()("collection", po::value(&path)->required(),
+                     "collection file written by reeb index")("output,o", po::value(&output)->required(),
+                                                              "PSB binary matrix to write (float32, N x N, row-major)")(
+          "cla", po::value(&classes_path),
+          "rows in the order of the models of this PSB .cla file (default: the .cla the collection was indexed "
+          "with, else collection order, every mesh)")("ascii", po::value(&ascii),
+                                                      "also write the SHREC ASCII matrix (N lines of N numbers)")(
+          "threads", po::value(&all_pairs.threads)->default_value(0), "threads (0: as many as OpenMP offers)");
   options.add(matching_options(all_pairs.matching));
   po::positional_options_description positional;
   positional.add("collection", 1);

@@ -64,7 +64,8 @@ std::string class_table(const RetrievalEvaluation& e) {
   std::string out = "| class | models | NN | FT | ST | E | DCG |\n|---|---|---|---|---|---|---|\n";
   for (const ClassScores& c : e.classes)
     out += "| " + c.name + " | " + std::to_string(c.size) + " | " +
-           (c.queries > 0 ? score_cells(c.mean) : std::string("left out as queries (fewer than 3 models) |||||")) + "\n";
+           (c.queries > 0 ? score_cells(c.mean) : std::string("left out as queries (fewer than 3 models) |||||")) +
+           "\n";
   return out;
 }
 
@@ -140,16 +141,17 @@ int run_eval(const std::vector<std::string>& args) {
   std::vector<std::string> compare;
   bool no_plot = false;
   int scaling_k = 0;
-  options.add_options()
-      ("matrix", po::value(&matrix_path)->required(),
-       "distance matrix: PSB binary (float32 N x N) or SHREC ASCII, told apart by the contents")
-      ("cla", po::value(&cla_path)->required(), "classes of the models, PSB .cla (rows in its model order)")
-      ("output,o", po::value(&out_dir)->required(), "report folder: report.md, pr.csv, pr.png, pr.svg")
-      ("name", po::value(&name), "name of the method in the report (default: the matrix file name)")
-      ("compare", po::value(&compare)->multitoken(), "other methods' matrices as PATH[:NAME], evaluated alike")
-      ("local-scaling", po::value(&scaling_k)->default_value(0),
-       "also evaluate every matrix after local scaling with the K-th nearest model (evaluation/local_scaling.h; 0: off)")
-      ("no-plot", po::bool_switch(&no_plot), "skip pr.png / pr.svg (they need /usr/bin/python3 with matplotlib)");
+  options.add_options()("matrix", po::value(&matrix_path)->required(),
+                        "distance matrix: PSB binary (float32 N x N) or SHREC ASCII, told apart by the contents")(
+      "cla", po::value(&cla_path)->required(),
+      "classes of the models, PSB .cla (rows in its model order)")("output,o", po::value(&out_dir)->required(),
+                                                                   "report folder: report.md, pr.csv, pr.png, pr.svg")(
+      "name", po::value(&name), "name of the method in the report (default: the matrix file name)")(
+      "compare", po::value(&compare)->multitoken(), "other methods' matrices as PATH[:NAME], evaluated alike")(
+      "local-scaling", po::value(&scaling_k)->default_value(0),
+      "also evaluate every matrix after local scaling with the K-th nearest model (evaluation/local_scaling.h; 0: "
+      "off)")("no-plot", po::bool_switch(&no_plot),
+              "skip pr.png / pr.svg (they need /usr/bin/python3 with matplotlib)");
   po::positional_options_description positional;
   positional.add("matrix", 1);
   po::variables_map vm;
@@ -164,7 +166,8 @@ int run_eval(const std::vector<std::string>& args) {
   std::vector<Method> methods{method_of(matrix_path)};
   if (!name.empty()) methods.front().name = name;
   for (const std::string& spec : compare) methods.push_back(method_of(spec));
-  if (scaling_k < 0) throw InvalidArgument("reeb eval: --local-scaling must be >= 0 (0: off), not " + std::to_string(scaling_k));
+  if (scaling_k < 0)
+    throw InvalidArgument("reeb eval: --local-scaling must be >= 0 (0: off), not " + std::to_string(scaling_k));
   std::vector<Method> scaled;
   for (Method& m : methods) {
     const DistanceMatrix distances = read_distance_matrix(m.matrix);

@@ -15,11 +15,11 @@ int run_export(const std::vector<std::string>& args) {
   po::options_description options("options");
   std::string path, name, output;
   bool json = false;
-  options.add_options()
-      ("collection", po::value(&path)->required(), "collection file written by reeb index")
-      ("name", po::value(&name)->required(), "the mesh's name in the collection (as reeb info --list lists them)")
-      ("json", po::bool_switch(&json), "write the graph as JSON (the only format)")
-      ("output,o", po::value(&output), "write to this file instead of standard output");
+  options.add_options()("collection", po::value(&path)->required(), "collection file written by reeb index")(
+      "name", po::value(&name)->required(), "the mesh's name in the collection (as reeb info --list lists them)")(
+      "json", po::bool_switch(&json),
+      "write the graph as JSON (the only format)")("output,o", po::value(&output),
+                                                   "write to this file instead of standard output");
   po::positional_options_description positional;
   positional.add("collection", 1).add("name", 1);
   po::variables_map vm;

@@ -48,12 +48,14 @@ void write_json(const std::string& path, const std::string& mesh_path, const Fea
         .field("vertices", static_cast<long long>(original_vertex_count(r.mesh)))
         .field("hole_filling_vertices", static_cast<long long>(r.mesh.num_vertices() - original_vertex_count(r.mesh)))
         .field("diameter", r.features.diameter);
-    json.key("diameter_ends").numbers(std::vector<long long>{r.mesh.source_index(r.features.source1),
-                                                             r.mesh.source_index(r.features.source2)});
+    json.key("diameter_ends")
+        .numbers(
+            std::vector<long long>{r.mesh.source_index(r.features.source1), r.mesh.source_index(r.features.source2)});
     json.key("feature_points").begin_array();
     for (const Index v : r.features.vertices) {
       json.begin_object().field("vertex", static_cast<long long>(r.mesh.source_index(v)));
-      json.key("position").numbers(std::vector<double>{r.mesh.vertices(v, 0), r.mesh.vertices(v, 1), r.mesh.vertices(v, 2)});
+      json.key("position")
+          .numbers(std::vector<double>{r.mesh.vertices(v, 0), r.mesh.vertices(v, 1), r.mesh.vertices(v, 2)});
       json.end_object();
     }
     json.end_array();
@@ -80,8 +82,8 @@ void write_fq_ply(const std::string& path, const MeshAnalysis& r, Geodesic geode
   PlyVertexData data;
   data.colors = colorize(fq, 0.0, 1.0);
   std::vector<double> marker(n, 0.0);
-  const DistanceField near = geodesic_distances(r.graph, r.features.vertices, geodesic,
-                                                GeodesicOptions{0.015 * r.features.diameter});
+  const DistanceField near =
+      geodesic_distances(r.graph, r.features.vertices, geodesic, GeodesicOptions{0.015 * r.features.diameter});
   for (Index v = 0; v < surface.num_vertices(); ++v) {
     if (near.nearest_source[v] == kInvalidIndex) continue;
     data.colors.row(v) << 0.85, 0.1, 0.1;
@@ -101,10 +103,10 @@ int run_features(const std::vector<std::string>& args) {
   analysis.reeb_graph = false;
   FeatureOptions& feature_options = analysis.features;
   bool all_components = false;
-  options.add_options()
-      ("mesh", po::value(&mesh_path)->required(), "mesh file (.off .obj .ply .stl)")
-      ("output,o", po::value(&json_path), "write the feature points as JSON")
-      ("ply", po::value(&ply_path), "write the mesh with f_q as colors and the feature points marked in red");
+  options.add_options()("mesh", po::value(&mesh_path)->required(), "mesh file (.off .obj .ply .stl)")(
+      "output,o", po::value(&json_path),
+      "write the feature points as JSON")("ply", po::value(&ply_path),
+                                          "write the mesh with f_q as colors and the feature points marked in red");
   add_components_option(options, all_components);
   options.add(analysis_options(analysis));
   po::positional_options_description positional;

@@ -57,8 +57,8 @@ std::filesystem::path or_temporary(const std::string& path, const std::filesyste
 void render_png(const std::filesystem::path& ply, const std::filesystem::path& obj, const std::string& png,
                 const std::filesystem::path& scratch) {
   const std::filesystem::path rendered = or_temporary("", scratch, "figure.png");
-  const std::string command = std::string("/usr/bin/python3 '") + REEBKIT_RENDER_SCRIPT + "' '" + ply.string() +
-                              "' '" + rendered.string() + "' --lines '" + obj.string() + "'";
+  const std::string command = std::string("/usr/bin/python3 '") + REEBKIT_RENDER_SCRIPT + "' '" + ply.string() + "' '" +
+                              rendered.string() + "' --lines '" + obj.string() + "'";
   if (std::system(command.c_str()) != 0) throw Error(png + ": rendering failed (" + command + ")");
   write_file_bytes(png, read_file_bytes(rendered));
 }
@@ -70,12 +70,12 @@ int run_graph(const std::vector<std::string>& args) {
   std::string mesh_path, json_path, ply_path, obj_path, png_path;
   AnalysisOptions analysis;
   bool all_components = false;
-  options.add_options()
-      ("mesh", po::value(&mesh_path)->required(), "mesh file (.off .obj .ply .stl)")
-      ("output,o", po::value(&json_path)->required(), "write the graph as JSON (schema: docs/formats.md)")
-      ("ply", po::value(&ply_path), "write the mesh colored by segment, with node and fq vertex properties")
-      ("obj", po::value(&obj_path), "write the graph and its skeleton as OBJ lines")
-      ("png", po::value(&png_path), "render the segmentation with the skeleton to a PNG (needs /usr/bin/python3)");
+  options.add_options()("mesh", po::value(&mesh_path)->required(),
+                        "mesh file (.off .obj .ply .stl)")("output,o", po::value(&json_path)->required(),
+                                                           "write the graph as JSON (schema: docs/formats.md)")(
+      "ply", po::value(&ply_path), "write the mesh colored by segment, with node and fq vertex properties")(
+      "obj", po::value(&obj_path), "write the graph and its skeleton as OBJ lines")(
+      "png", po::value(&png_path), "render the segmentation with the skeleton to a PNG (needs /usr/bin/python3)");
   add_components_option(options, all_components);
   options.add(analysis_options(analysis));
   po::positional_options_description positional;

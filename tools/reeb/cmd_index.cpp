@@ -18,32 +18,34 @@ int run_index(const std::vector<std::string>& args) {
   std::string output, classes_path;
   ExtractionOptions extraction;
   bool allow_failures = false;
-  options.add_options()
-      ("input", po::value(&inputs)->required()->multitoken(),
-       "a folder (searched recursively for .off .obj .ply .stl), a list file (.txt .lst, one path a line) "
-       "or mesh files")
-      ("output,o", po::value(&output)->required(), "the collection file to write (HDF5)")
-      ("classes", po::value(&classes_path),
-       "class labels from a PSB .cla file (model id = file name without extension)")
-      ("threads", po::value(&extraction.threads)->default_value(0)->notifier([](int n) {
-         if (n < 0) throw po::error("--threads must be >= 0");
-       }), "worker threads (0: as many as OpenMP offers)")
-      ("checkpoint-seconds", po::value(&extraction.checkpoint_seconds)->default_value(extraction.checkpoint_seconds)
-                                 ->notifier([](double s) {
-                                   if (!(s >= 0)) throw po::error("--checkpoint-seconds must be a number >= 0");
-                                 }),
-       "make the file (under MPI: each process's shard) durable at least this often: what an interruption loses")
-      ("resume", po::bool_switch(&extraction.resume),
-       "keep the entries already in the file and compute only new or changed meshes (content hash); the "
-       "analysis options must be the file's")
-      ("allow-failures", po::bool_switch(&allow_failures),
-       "exit 0 when some meshes failed (they are failed entries of the file), for batch use; a run in which "
-       "every mesh failed still exits 1");
+  options.add_options()(
+      "input", po::value(&inputs)->required()->multitoken(),
+      "a folder (searched recursively for .off .obj .ply .stl), a list file (.txt .lst, one path a line) "
+      "or mesh files")("output,o", po::value(&output)->required(), "the collection file to write (HDF5)")(
+      "classes", po::value(&classes_path),
+      "class labels from a PSB .cla file (model id = file name without extension)")(
+      "threads", po::value(&extraction.threads)->default_value(0)->notifier([](int n) {
+        if (n < 0) throw po::error("--threads must be >= 0");
+      }),
+      "worker threads (0: as many as OpenMP offers)")(
+      "checkpoint-seconds",
+      po::value(&extraction.checkpoint_seconds)->default_value(extraction.checkpoint_seconds)->notifier([](double s) {
+        if (!(s >= 0)) throw po::error("--checkpoint-seconds must be a number >= 0");
+      }),
+      "make the file (under MPI: each process's shard) durable at least this often: what an interruption loses")(
+      "resume", po::bool_switch(&extraction.resume),
+      "keep the entries already in the file and compute only new or changed meshes (content hash); the "
+      "analysis options must be the file's")("allow-failures", po::bool_switch(&allow_failures),
+                                             "exit 0 when some meshes failed (they are failed entries of the file), "
+                                             "for batch use; a run in which "
+                                             "every mesh failed still exits 1");
   options.add(analysis_options(extraction.analysis));
   po::positional_options_description positional;
   positional.add("input", -1);
   po::variables_map vm;
-  if (!parse(args, "reeb index INPUT... -o collection.h5 [--classes FILE.cla] [--threads N] [--checkpoint-seconds S] [--resume] "
+  if (!parse(args,
+             "reeb index INPUT... -o collection.h5 [--classes FILE.cla] [--threads N] [--checkpoint-seconds S] "
+             "[--resume] "
              "[--allow-failures] "
              "[analysis options]",
              options, positional, vm))

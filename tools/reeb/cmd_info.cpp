@@ -14,8 +14,8 @@ int run_info(const std::vector<std::string>& args) {
   po::options_description options("options");
   std::string path;
   bool list = false;
-  options.add_options()("collection", po::value(&path)->required(), "collection file written by reeb index")
-      ("list", po::bool_switch(&list), "also list every entry: name, class, status (ok or failed), nodes");
+  options.add_options()("collection", po::value(&path)->required(), "collection file written by reeb index")(
+      "list", po::bool_switch(&list), "also list every entry: name, class, status (ok or failed), nodes");
   po::positional_options_description positional;
   positional.add("collection", 1);
   po::variables_map vm;
@@ -52,8 +52,7 @@ int run_info(const std::vector<std::string>& args) {
   if (!provenance.classes.empty())
     std::cout << "  classes from " << provenance.classes_file << " (" << provenance.classes.size()
               << ", in its order)\n";
-  std::cout
-            << reader.size() << " meshes: " << ok << " ok, " << failures.size() << " failed; " << nodes << " nodes, "
+  std::cout << reader.size() << " meshes: " << ok << " ok, " << failures.size() << " failed; " << nodes << " nodes, "
             << edges << " edges\n";
   std::cout << classes.size() << " classes" << (classes.empty() ? "" : ":") << "\n";
   for (const auto& [name, count] : classes) std::cout << "  " << name << "\t" << count << "\n";

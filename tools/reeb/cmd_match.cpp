@@ -78,8 +78,8 @@ void print_match(const GraphRecord& a, const GraphRecord& b, const GraphMatch& m
   std::vector<char> matched(static_cast<std::size_t>(b.num_nodes()), 0);
   const auto side = [](const GraphRecord& e, std::int32_t node) {
     std::ostringstream s;
-    s << std::setw(4) << node << "  " << std::left << std::setw(26) << node_label(e, node) << std::right
-      << std::fixed << std::setprecision(4) << relative_area(e, node);
+    s << std::setw(4) << node << "  " << std::left << std::setw(26) << node_label(e, node) << std::right << std::fixed
+      << std::setprecision(4) << relative_area(e, node);
     return s.str();
   };
   for (std::int32_t i = 0; i < a.num_nodes(); ++i) {
@@ -93,7 +93,8 @@ void print_match(const GraphRecord& a, const GraphRecord& b, const GraphMatch& m
     }
   }
   for (std::int32_t j = 0; j < b.num_nodes(); ++j)
-    if (!matched[static_cast<std::size_t>(j)]) std::cout << "  inserted" << std::string(37, ' ') << "B " << side(b, j) << "\n";
+    if (!matched[static_cast<std::size_t>(j)])
+      std::cout << "  inserted" << std::string(37, ' ') << "B " << side(b, j) << "\n";
 }
 
 using Box = std::array<double, 2>;  // smallest and largest x
@@ -149,10 +150,11 @@ int run_match(const std::vector<std::string>& args) {
   std::string spec_a, spec_b, obj_path;
   AnalysisOptions analysis;
   MatchingOptions matching;
-  options.add_options()
-      ("a", po::value(&spec_a)->required(), "first mesh: a mesh file or COLLECTION.h5:NAME")
-      ("b", po::value(&spec_b)->required(), "second mesh: a mesh file or COLLECTION.h5:NAME")
-      ("obj", po::value(&obj_path), "write both graphs and lines between matched node barycenters as OBJ");
+  options
+      .add_options()("a", po::value(&spec_a)->required(),
+                     "first mesh: a mesh file or COLLECTION.h5:NAME")("b", po::value(&spec_b)->required(),
+                                                                      "second mesh: a mesh file or COLLECTION.h5:NAME")(
+          "obj", po::value(&obj_path), "write both graphs and lines between matched node barycenters as OBJ");
   options.add(analysis_options(analysis)).add(matching_options(matching));
   po::positional_options_description positional;
   positional.add("a", 1).add("b", 1);

@@ -26,8 +26,8 @@ Vec3 parse_triple(const std::string& text, const std::string& option) {
   std::istringstream in(text);
   Vec3 v;
   char comma1 = 0, comma2 = 0;
-  if (!(in >> v.x() >> comma1 >> v.y() >> comma2 >> v.z()) || comma1 != ',' || comma2 != ',' || !(in >> std::ws).eof() ||
-      !v.allFinite())
+  if (!(in >> v.x() >> comma1 >> v.y() >> comma2 >> v.z()) || comma1 != ',' || comma2 != ',' ||
+      !(in >> std::ws).eof() || !v.allFinite())
     throw po::error("--" + option + " takes X,Y,Z (three numbers), not '" + text + "'");
   return v;
 }
@@ -39,8 +39,10 @@ Eigen::Matrix3d parse_rotation(const std::string& text, std::uint64_t seed) {
   const std::size_t colon = text.rfind(':');
   if (colon == std::string::npos) throw po::error("--rotate takes random or AXIS:DEGREES, not '" + text + "'");
   const std::string axis_text = text.substr(0, colon);
-  Vec3 axis = axis_text == "x" ? Vec3::UnitX() : axis_text == "y" ? Vec3::UnitY() : axis_text == "z" ? Vec3::UnitZ()
-                                                                                      : parse_triple(axis_text, "rotate");
+  Vec3 axis = axis_text == "x"   ? Vec3::UnitX()
+              : axis_text == "y" ? Vec3::UnitY()
+              : axis_text == "z" ? Vec3::UnitZ()
+                                 : parse_triple(axis_text, "rotate");
   double degrees = 0;
   std::istringstream in(text.substr(colon + 1));
   if (!(in >> degrees) || !(in >> std::ws).eof() || !std::isfinite(degrees) || axis.norm() == 0.0)
@@ -64,24 +66,26 @@ int run_perturb(const std::vector<std::string>& args) {
   double scale = 1.0, noise = 0.0, decimate = 1.0;
   int subdivide = 0;
   std::uint64_t seed = 1, pose_seed = 0;
-  options.add_options()
-      ("mesh", po::value(&mesh_path)->required(), "mesh file (.off .obj .ply .stl); its largest component is perturbed")
-      ("output,o", po::value(&out_path)->required(), "the variant (.off or .ply)")
-      ("correspondence", po::value(&correspondence_path),
-       "the correspondence file (default: OUT with the extension .corr; docs/formats.md)")
-      ("rotate", po::value(&rotate), "random (uniform, from --seed) or AXIS:DEGREES, AXIS = x, y, z or X,Y,Z")
-      ("scale", po::value(&scale)->default_value(scale), "uniform scale factor (> 0)")
-      ("translate", po::value(&translate), "translation X,Y,Z")
-      ("noise", po::value(&noise)->default_value(noise),
-       "Gaussian noise along the normals, sigma as a fraction of the bounding box diagonal")
-      ("decimate", po::value(&decimate)->default_value(decimate),
-       "quadric edge collapse to this share of the vertices, in (0, 1]")
-      ("remesh", po::value(&remesh_text),
-       "a new triangulation sharing no vertex: N_VERTICES (an integer) or TARGET_EDGE (a number with a decimal point)")
-      ("subdivide", po::value(&subdivide)->default_value(subdivide), "rounds of 1-to-4 midpoint subdivision")
-      ("pose", po::value(&pose_seed),
-       "turn up to 2 leaf components of the Reeb graph by 20-35 degrees, picked by this seed (section 5.2)")
-      ("seed", po::value(&seed)->default_value(seed), "seed of the random rotation, noise and remeshing");
+  options.add_options()("mesh", po::value(&mesh_path)->required(),
+                        "mesh file (.off .obj .ply .stl); its largest component is perturbed")(
+      "output,o", po::value(&out_path)->required(),
+      "the variant (.off or .ply)")("correspondence", po::value(&correspondence_path),
+                                    "the correspondence file (default: OUT with the extension .corr; docs/formats.md)")(
+      "rotate", po::value(&rotate),
+      "random (uniform, from --seed) or AXIS:DEGREES, AXIS = x, y, z or X,Y,Z")("scale",
+                                                                                po::value(&scale)->default_value(scale),
+                                                                                "uniform scale factor (> 0)")(
+      "translate", po::value(&translate),
+      "translation X,Y,Z")("noise", po::value(&noise)->default_value(noise),
+                           "Gaussian noise along the normals, sigma as a fraction of the bounding box diagonal")(
+      "decimate", po::value(&decimate)->default_value(decimate),
+      "quadric edge collapse to this share of the vertices, in (0, 1]")(
+      "remesh", po::value(&remesh_text),
+      "a new triangulation sharing no vertex: N_VERTICES (an integer) or TARGET_EDGE (a number with a decimal point)")(
+      "subdivide", po::value(&subdivide)->default_value(subdivide), "rounds of 1-to-4 midpoint subdivision")(
+      "pose", po::value(&pose_seed),
+      "turn up to 2 leaf components of the Reeb graph by 20-35 degrees, picked by this seed (section 5.2)")(
+      "seed", po::value(&seed)->default_value(seed), "seed of the random rotation, noise and remeshing");
   po::positional_options_description positional;
   positional.add("mesh", 1);
   po::variables_map vm;
@@ -93,7 +97,8 @@ int run_perturb(const std::vector<std::string>& args) {
   if (!(scale > 0.0 && std::isfinite(scale))) throw po::error("--scale must be a finite number > 0");
   if (!(noise >= 0.0 && std::isfinite(noise))) throw po::error("--noise must be a finite number >= 0");
   if (subdivide < 0) throw po::error("--subdivide must be >= 0");
-  if (correspondence_path.empty()) correspondence_path = std::filesystem::path(out_path).replace_extension(".corr").string();
+  if (correspondence_path.empty())
+    correspondence_path = std::filesystem::path(out_path).replace_extension(".corr").string();
   check_outputs({out_path, correspondence_path}, {mesh_path});
   Similarity similarity;
   similarity.scale = scale;
@@ -121,7 +126,8 @@ int run_perturb(const std::vector<std::string>& args) {
     MeshVariant variant = perturb_mesh(mesh, p, analysis, &notes);
     compose(correspondence, variant.original_vertex);
     if (p.kind == PerturbationKind::Pose) {  // the skipped leaves, then the turns
-      for (std::size_t k = 0; k + 1 < notes.size(); ++k) std::cerr << "warning: " << mesh_path << ": " << notes[k] << "\n";
+      for (std::size_t k = 0; k + 1 < notes.size(); ++k)
+        std::cerr << "warning: " << mesh_path << ": " << notes[k] << "\n";
       std::cout << what << ": " << notes.back() << "\n";
     } else {
       std::cout << what << ": " << mesh.num_vertices() << " -> " << variant.mesh.num_vertices() << " vertices\n";
@@ -134,7 +140,8 @@ int run_perturb(const std::vector<std::string>& args) {
   }
   if (decimate != 1.0) step("decimate", Perturbation{PerturbationKind::Decimate, decimate, {}, seed});
   if (!remesh_text.empty()) step("remesh", Perturbation{PerturbationKind::Remesh, 0, remesh_options, seed});
-  if (subdivide > 0) step("subdivide", Perturbation{PerturbationKind::Subdivide, static_cast<double>(subdivide), {}, seed});
+  if (subdivide > 0)
+    step("subdivide", Perturbation{PerturbationKind::Subdivide, static_cast<double>(subdivide), {}, seed});
   if (noise > 0.0) step("noise", Perturbation{PerturbationKind::Noise, noise, {}, seed});
   mesh = transformed(mesh, similarity);
 

@@ -57,16 +57,15 @@ int run_query(const std::vector<std::string>& args) {
   std::string path, query;
   QueryOptions query_options;
   bool json = false;
-  options.add_options()
-      ("collection", po::value(&path)->required(), "collection file written by reeb index")
-      ("query", po::value(&query)->required(),
-       "a mesh of the collection (its name, as reeb info --list lists them) or a mesh file (analysed first)")
-      ("k,k", po::value(&query_options.k)->default_value(query_options.k), "results to list")
-      ("candidates", po::value(&query_options.candidates)->default_value(query_options.candidates),
-       "nearest graph signatures reranked by graph matching (>= the collection size: every mesh)")
-      ("threads", po::value(&query_options.threads)->default_value(query_options.threads),
-       "threads matching the candidates (0: as many as OpenMP offers)")
-      ("json", po::bool_switch(&json), "print the ranked list as JSON");
+  options.add_options()("collection", po::value(&path)->required(), "collection file written by reeb index")(
+      "query", po::value(&query)->required(),
+      "a mesh of the collection (its name, as reeb info --list lists them) or a mesh file (analysed first)")(
+      "k,k", po::value(&query_options.k)->default_value(query_options.k),
+      "results to list")("candidates", po::value(&query_options.candidates)->default_value(query_options.candidates),
+                         "nearest graph signatures reranked by graph matching (>= the collection size: every mesh)")(
+      "threads", po::value(&query_options.threads)->default_value(query_options.threads),
+      "threads matching the candidates (0: as many as OpenMP offers)")("json", po::bool_switch(&json),
+                                                                       "print the ranked list as JSON");
   options.add(matching_options(query_options.matching));
   po::positional_options_description positional;
   positional.add("collection", 1).add("query", 1);

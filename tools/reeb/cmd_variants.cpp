@@ -59,10 +59,11 @@ int run_variants(const std::vector<std::string>& args) {
   std::vector<std::string> inputs;
   std::string out_dir;
   std::uint64_t seed = 2006;
-  options.add_options()
-      ("input", po::value(&inputs)->multitoken()->required(), "mesh files, folders or list files (as reeb index)")
-      ("output,o", po::value(&out_dir)->required(), "folder for the meshes and variants.cla (created)")
-      ("seed", po::value(&seed)->default_value(seed), "random seed of every variant");
+  options.add_options()("input", po::value(&inputs)->multitoken()->required(),
+                        "mesh files, folders or list files (as reeb index)")(
+      "output,o", po::value(&out_dir)->required(),
+      "folder for the meshes and variants.cla (created)")("seed", po::value(&seed)->default_value(seed),
+                                                          "random seed of every variant");
   po::positional_options_description positional;
   positional.add("input", -1);
   po::variables_map vm;

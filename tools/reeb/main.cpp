@@ -26,7 +26,8 @@ const std::vector<Command>& commands() {
       {"eval", "retrieval measures (NN, FT, ST, E, DCG, precision-recall) of distance matrices, as a report", run_eval},
       {"query", "the meshes of a collection nearest to a mesh: signature pre-filter, graph matching rerank", run_query},
       {"distances", "graph-matching distances of every pair of a collection, as a PSB .matrix", run_distances},
-      {"variants", "a collection with classes: each mesh plus rotated, resampled, re-posed and noisy copies", run_variants},
+      {"variants", "a collection with classes: each mesh plus rotated, resampled, re-posed and noisy copies",
+       run_variants},
       {"perturb", "a rotated, rescaled, posed, decimated, remeshed, subdivided or noisy variant and its correspondence",
        run_perturb},
   };

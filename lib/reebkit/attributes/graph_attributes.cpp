@@ -75,19 +75,19 @@ namespace reebkit {
 
 namespace {
 
-constexpr int kLevels = kRadiusProfileLevels;  // level lines per region for kNodeMeanRadius
-constexpr int kShapeSamples = 128;   // random points per region for kNodeShapeHistogram
-constexpr double kShapeBinWidth = 0.2;  // of distance / sqrt(region area)
-constexpr double kGeodesicBinWidth = 0.25;  // of geodesic distance / sqrt(region area), kNodeGeodesicHistogram
-constexpr int kAxisBins = kGlobalShapeBins / 2;       // of each half of the global geodesic histogram
+constexpr int kLevels = kRadiusProfileLevels;    // level lines per region for kNodeMeanRadius
+constexpr int kShapeSamples = 128;               // random points per region for kNodeShapeHistogram
+constexpr double kShapeBinWidth = 0.2;           // of distance / sqrt(region area)
+constexpr double kGeodesicBinWidth = 0.25;       // of geodesic distance / sqrt(region area), kNodeGeodesicHistogram
+constexpr int kAxisBins = kGlobalShapeBins / 2;  // of each half of the global geodesic histogram
 constexpr double kAxisPositionBinWidth = 1.0 / kAxisBins;  // of |d1 - d2| / D
 constexpr double kAxisOffsetBinWidth = 0.5 / kAxisBins;    // of (d1 + d2 - D) / D
-constexpr int kGlobalShapeSamples = 512;       // random points of the whole surface for its D2
-constexpr double kGlobalShapeBinWidth = 0.15;  // of distance / sqrt(mesh area)
-constexpr int kLeafSlots = 6;        // largest leaves listed in the signature
-constexpr int kAreaBins = 6;         // histogram of node relative areas
-constexpr int kEigenvalues = 8;      // normalized Laplacian eigenvalues 2 .. 9
-constexpr double kCountScale = 8.0;  // counts c enter as log2(1 + c) / 8 (1 at c = 255)
+constexpr int kGlobalShapeSamples = 512;                   // random points of the whole surface for its D2
+constexpr double kGlobalShapeBinWidth = 0.15;              // of distance / sqrt(mesh area)
+constexpr int kLeafSlots = 6;                              // largest leaves listed in the signature
+constexpr int kAreaBins = 6;                               // histogram of node relative areas
+constexpr int kEigenvalues = 8;                            // normalized Laplacian eigenvalues 2 .. 9
+constexpr double kCountScale = 8.0;                        // counts c enter as log2(1 + c) / 8 (1 at c = 255)
 
 // Signature layout (kSignatureNames lists the same order).
 constexpr int kSigCounts = 0;  // nodes, leaves, bifurcation starts, junction starts, cycles
@@ -96,13 +96,14 @@ constexpr int kSigLeafArea = 6;
 constexpr int kSigLeafExtent = kSigLeafArea + kLeafSlots;
 constexpr int kSigAreaHistogram = kSigLeafExtent + kLeafSlots;
 constexpr int kSigEigenvalues = kSigAreaHistogram + kAreaBins;
-static_assert(kSigEigenvalues + kEigenvalues == kSigGlobalShape && kSigGlobalShape + kGlobalShapeBins == kSigGlobalGeodesic,
+static_assert(kSigEigenvalues + kEigenvalues == kSigGlobalShape &&
+                  kSigGlobalShape + kGlobalShapeBins == kSigGlobalGeodesic,
               "signature layout must fill kSignatureLength");
 
 /// Upper ends of the relative area bins but the last: half decades, so that
 /// finger tips (~1e-3) and torsos (> 0.1) land in different bins.
-constexpr std::array<double, kAreaBins - 1> kAreaBinEnds = {1e-3, 3.1622776601683795e-3, 1e-2,
-                                                            3.1622776601683795e-2, 1e-1};
+constexpr std::array<double, kAreaBins - 1> kAreaBinEnds = {1e-3, 3.1622776601683795e-3, 1e-2, 3.1622776601683795e-2,
+                                                            1e-1};
 
 std::size_t at(Index i) { return static_cast<std::size_t>(i); }
 
@@ -201,13 +202,14 @@ RegionGeodesics region_geodesics(const MeshGraph& graph, Geodesic method, const 
       const DistanceField& field = solver->run(source, options);
       // Vertices settle by distance: the last region vertex is the farthest.
       const auto& settled = solver->settled();
-      const auto far = std::find_if(settled.rbegin(), settled.rend(),
-                                    [&](Index w) { return reeb.vertex_node[at(w)] == node; });
+      const auto far =
+          std::find_if(settled.rbegin(), settled.rend(), [&](Index w) { return reeb.vertex_node[at(w)] == node; });
       extent[at(node)] = std::max(extent[at(node)], field.distance[at(*far)]);
       for (const Index w : settled)
         if (reeb.vertex_node[at(w)] == node) {
           done[at(w)] = 1;
-          if (area > 0.0) add_to_histogram(histogram, kShapeBins, field.distance[at(w)] * bin, vertex_area[at(w)] / area);
+          if (area > 0.0)
+            add_to_histogram(histogram, kShapeBins, field.distance[at(w)] * bin, vertex_area[at(w)] / area);
         }
     }
   }
@@ -233,7 +235,8 @@ TriangleSums triangle_sums(const Mesh& mesh, Index original_vertices, const std:
   const auto add_border = [&](Index a, Index b, double length) {
     const std::array<Index, 2> key = {std::min(a, b), std::max(a, b)};
     const auto it = std::lower_bound(reeb.edges.begin(), reeb.edges.end(), key);
-    if (it != reeb.edges.end() && *it == key) sums.border_length[static_cast<std::size_t>(it - reeb.edges.begin())] += length;
+    if (it != reeb.edges.end() && *it == key)
+      sums.border_length[static_cast<std::size_t>(it - reeb.edges.begin())] += length;
   };
   for (Index t = 0; t < mesh.num_triangles(); ++t) {
     const std::array<Index, 3> v = {mesh.triangles(t, 0), mesh.triangles(t, 1), mesh.triangles(t, 2)};
@@ -351,7 +354,8 @@ std::vector<double> shape_histograms(const Mesh& mesh, Index original_vertices, 
     });
   std::vector<double> histogram(nodes * kShapeBins, 0.0);
   for (std::size_t node = 0; node < nodes; ++node)
-    shape_distribution(mesh, {triangle.data() + first[node], cumulative.data() + first[node], first[node + 1] - first[node]},
+    shape_distribution(mesh,
+                       {triangle.data() + first[node], cumulative.data() + first[node], first[node + 1] - first[node]},
                        kShapeSamples, kShapeBinWidth, 2006 + node, histogram.data() + node * kShapeBins, kShapeBins);
   return histogram;
 }
@@ -379,8 +383,7 @@ void laplacian_spectrum(const ReebGraph& reeb, const std::vector<double>& degree
   }
   const Eigen::VectorXd eigenvalues =
       Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(laplacian, Eigen::EigenvaluesOnly).eigenvalues();
-  for (int i = 0; i < kEigenvalues; ++i)
-    out[i] = i + 1 < n ? std::clamp(eigenvalues(i + 1), 0.0, 2.0) / 2.0 : 0.5;
+  for (int i = 0; i < kEigenvalues; ++i) out[i] = i + 1 < n ? std::clamp(eigenvalues(i + 1), 0.0, 2.0) / 2.0 : 0.5;
 }
 
 }  // namespace
@@ -438,8 +441,8 @@ GraphAttributes compute_attributes(const Mesh& mesh, const MeshGraph& graph, con
     row[kNodeStartType] = static_cast<double>(node.type);
     row[kNodeEndType] = static_cast<double>(node.end);
     for (int k = 0; k < kLevels; ++k)
-      row[kNodeRadiusProfile + k] =
-          sums.level_length[i * kLevels + static_cast<std::size_t>(k)] / (2.0 * static_cast<double>(EIGEN_PI)) / length_unit;
+      row[kNodeRadiusProfile + k] = sums.level_length[i * kLevels + static_cast<std::size_t>(k)] /
+                                    (2.0 * static_cast<double>(EIGEN_PI)) / length_unit;
     std::copy_n(shape.data() + i * kShapeBins, kShapeBins, row + kNodeShapeHistogram);
     std::copy_n(regions.histogram.data() + i * kShapeBins, kShapeBins, row + kNodeGeodesicHistogram);
     std::copy_n(spectra.region.data() + i * kRegionSpectrumLength, kRegionSpectrumLength, row + kNodeSpectrum);

@@ -6,31 +6,34 @@
 
 namespace reebkit {
 
+// One row per group of columns.
+// clang-format off
 const std::array<const char*, kNodeAttributeCount> kNodeAttributeNames = {
-    "relative_area", "fq_min",       "fq_max",       "fq_span",      "geodesic_extent", "mean_radius",
-    "vertex_share",  "degree",       "start_type",   "end_type",     "radius_0",        "radius_1",
-    "radius_2",      "radius_3",     "radius_4",     "radius_5",     "radius_6",        "radius_7",
-    "shape_0",       "shape_1",      "shape_2",      "shape_3",      "shape_4",         "shape_5",
-    "shape_6",       "shape_7",      "geodesic_0",   "geodesic_1",   "geodesic_2",      "geodesic_3",
-    "geodesic_4",    "geodesic_5",   "geodesic_6",   "geodesic_7",      "spectrum_1",      "spectrum_2",
-    "spectrum_3",    "spectrum_4",   "spectrum_5",   "spectrum_6"};
+    "relative_area", "fq_min", "fq_max", "fq_span", "geodesic_extent", "mean_radius", "vertex_share",
+    "degree", "start_type", "end_type",
+    "radius_0", "radius_1", "radius_2", "radius_3", "radius_4", "radius_5", "radius_6", "radius_7",
+    "shape_0", "shape_1", "shape_2", "shape_3", "shape_4", "shape_5", "shape_6", "shape_7",
+    "geodesic_0", "geodesic_1", "geodesic_2", "geodesic_3", "geodesic_4", "geodesic_5", "geodesic_6", "geodesic_7",
+    "spectrum_1", "spectrum_2", "spectrum_3", "spectrum_4", "spectrum_5", "spectrum_6"};
 
 const std::array<const char*, kEdgeAttributeCount> kEdgeAttributeNames = {"boundary_length", "event_fq"};
 
 const std::array<const char*, kSignatureLength> kSignatureNames = {
-    "nodes",          "leaves",         "bifurcations",   "junctions",      "cycles",         "root_area",
-    "leaf_area_0",    "leaf_area_1",    "leaf_area_2",    "leaf_area_3",    "leaf_area_4",    "leaf_area_5",
-    "leaf_extent_0",  "leaf_extent_1",  "leaf_extent_2",  "leaf_extent_3",  "leaf_extent_4",  "leaf_extent_5",
-    "area_hist_0",    "area_hist_1",    "area_hist_2",    "area_hist_3",    "area_hist_4",    "area_hist_5",
-    "laplacian_2",    "laplacian_3",    "laplacian_4",    "laplacian_5",    "laplacian_6",    "laplacian_7",
-    "laplacian_8",    "laplacian_9",    "d2_0",           "d2_1",           "d2_2",           "d2_3",
-    "d2_4",           "d2_5",           "d2_6",           "d2_7",           "d2_8",           "d2_9",
-    "d2_10",          "d2_11",          "d2_12",          "d2_13",          "d2_14",          "d2_15",          "axis_position_0", "axis_position_1",
-    "axis_position_2", "axis_position_3", "axis_position_4", "axis_position_5", "axis_position_6", "axis_position_7",
-    "axis_offset_0",  "axis_offset_1",  "axis_offset_2",  "axis_offset_3",  "axis_offset_4",  "axis_offset_5",
-    "axis_offset_6",  "axis_offset_7",  "dna_1",          "dna_2",          "dna_3",          "dna_4",
-    "dna_5",          "dna_6",          "dna_7",          "dna_8",          "dna_9",          "dna_10",
-    "dna_11",         "dna_12",         "dna_13",         "dna_14",         "dna_15",         "dna_16"};
+    "nodes", "leaves", "bifurcations", "junctions", "cycles", "root_area",
+    "leaf_area_0", "leaf_area_1", "leaf_area_2", "leaf_area_3", "leaf_area_4", "leaf_area_5",
+    "leaf_extent_0", "leaf_extent_1", "leaf_extent_2", "leaf_extent_3", "leaf_extent_4", "leaf_extent_5",
+    "area_hist_0", "area_hist_1", "area_hist_2", "area_hist_3", "area_hist_4", "area_hist_5",
+    "laplacian_2", "laplacian_3", "laplacian_4", "laplacian_5",
+    "laplacian_6", "laplacian_7", "laplacian_8", "laplacian_9",
+    "d2_0", "d2_1", "d2_2", "d2_3", "d2_4", "d2_5", "d2_6", "d2_7",
+    "d2_8", "d2_9", "d2_10", "d2_11", "d2_12", "d2_13", "d2_14", "d2_15",
+    "axis_position_0", "axis_position_1", "axis_position_2", "axis_position_3",
+    "axis_position_4", "axis_position_5", "axis_position_6", "axis_position_7",
+    "axis_offset_0", "axis_offset_1", "axis_offset_2", "axis_offset_3",
+    "axis_offset_4", "axis_offset_5", "axis_offset_6", "axis_offset_7",
+    "dna_1", "dna_2", "dna_3", "dna_4", "dna_5", "dna_6", "dna_7", "dna_8",
+    "dna_9", "dna_10", "dna_11", "dna_12", "dna_13", "dna_14", "dna_15", "dna_16"};
+// clang-format on
 
 std::int64_t independent_cycles(const GraphRecord& record) {
   // Union-find over the nodes counts the connected components.

@@ -16,16 +16,16 @@ namespace reebkit {
 
 /// Columns of the node attributes (GraphRecord::node_attributes), in order (docs/method.md, "Graph attributes").
 enum NodeAttribute : int {
-  kNodeRelativeArea,      ///< region area / mesh area
-  kNodeFqMin,             ///< smallest f_q over the region
-  kNodeFqMax,             ///< largest f_q over the region
-  kNodeFqSpan,            ///< fq_max - fq_min
-  kNodeGeodesicExtent,    ///< geodesic extent of the region / geodesic diameter of the mesh
-  kNodeMeanRadius,        ///< mean over its level lines of length / (2 pi), / sqrt(mesh area)
-  kNodeVertexShare,       ///< region vertices / mesh vertices
-  kNodeDegree,            ///< number of graph edges at the node
-  kNodeStartType,         ///< NodeType the region starts with, as a number
-  kNodeEndType,           ///< NodeType the region ends with, as a number
+  kNodeRelativeArea,    ///< region area / mesh area
+  kNodeFqMin,           ///< smallest f_q over the region
+  kNodeFqMax,           ///< largest f_q over the region
+  kNodeFqSpan,          ///< fq_max - fq_min
+  kNodeGeodesicExtent,  ///< geodesic extent of the region / geodesic diameter of the mesh
+  kNodeMeanRadius,      ///< mean over its level lines of length / (2 pi), / sqrt(mesh area)
+  kNodeVertexShare,     ///< region vertices / mesh vertices
+  kNodeDegree,          ///< number of graph edges at the node
+  kNodeStartType,       ///< NodeType the region starts with, as a number
+  kNodeEndType,         ///< NodeType the region ends with, as a number
   /// Thickness profile: the level-line radius (length / (2 pi) / sqrt(mesh
   /// area)) at each of the kRadiusProfileLevels levels mean_radius averages,
   /// from fq_min to fq_max.
@@ -97,33 +97,47 @@ extern const std::array<const char*, kSignatureLength> kSignatureNames;
 enum NodeColumn : int { kNodeType, kNodeEnd, kNodeBirthVertex, kNodeVertexCount, kNodeColumnCount };
 /// Columns of the `node_geometry` dataset (absolute, not invariant).
 enum NodeGeometryColumn : int {
-  kGeomArea, kGeomFqMin, kGeomFqMax, kGeomBarycenterX, kGeomBarycenterY, kGeomBarycenterZ, kGeomColumnCount
+  kGeomArea,
+  kGeomFqMin,
+  kGeomFqMax,
+  kGeomBarycenterX,
+  kGeomBarycenterY,
+  kGeomBarycenterZ,
+  kGeomColumnCount
 };
 /// Columns of the `timings` dataset (milliseconds).
-enum TimingColumn : int { kTimeLoad, kTimeGraph, kTimeFeatures, kTimeQuotient, kTimeReeb, kTimeAttributes, kTimeColumnCount };
+enum TimingColumn : int {
+  kTimeLoad,
+  kTimeGraph,
+  kTimeFeatures,
+  kTimeQuotient,
+  kTimeReeb,
+  kTimeAttributes,
+  kTimeColumnCount
+};
 
 /// One mesh and its attributed Reeb graph: what the extractor produces, the
 /// collection file stores, the matcher compares and the graph JSON shows.
 struct GraphRecord {
-  std::string name;           ///< the mesh as named on input (path relative to the input folder, or as given)
-  std::string class_label;    ///< from the .cla file, "" when none
+  std::string name;                ///< the mesh as named on input (path relative to the input folder, or as given)
+  std::string class_label;         ///< from the .cla file, "" when none
   std::uint64_t content_hash = 0;  ///< hash of the file's bytes (content_hash.h): what --resume compares
-  std::int64_t vertices = 0;  ///< of the surface as read (hole filling excluded); 0 when failed
+  std::int64_t vertices = 0;       ///< of the surface as read (hole filling excluded); 0 when failed
   std::int64_t faces = 0;
-  bool ok = false;            ///< false: `error` says why; the graph arrays are empty
+  bool ok = false;  ///< false: `error` says why; the graph arrays are empty
   std::string error;
   std::array<double, kTimeColumnCount> timings{};  ///< ms per TimingColumn
 
   // The graph (node ids local to this graph, vertex ids in the file's numbering).
-  std::vector<std::int32_t> nodes;        ///< #nodes x kNodeColumnCount
-  std::vector<double> node_geometry;      ///< #nodes x kGeomColumnCount
-  std::vector<double> node_attributes;    ///< #nodes x kNodeAttributeCount
-  std::vector<std::int32_t> edges;        ///< #edges x 2
-  std::vector<double> edge_attributes;    ///< #edges x kEdgeAttributeCount
-  std::vector<std::int32_t> feature_points;  ///< vertex ids (-1: a vertex added to close a hole)
-  std::vector<std::int64_t> skeleton_offset; ///< #nodes + 1, into skeleton_points rows
-  std::vector<double> skeleton_points;    ///< #points x 3
-  std::vector<double> signature;          ///< kSignatureLength (NaN when failed)
+  std::vector<std::int32_t> nodes;            ///< #nodes x kNodeColumnCount
+  std::vector<double> node_geometry;          ///< #nodes x kGeomColumnCount
+  std::vector<double> node_attributes;        ///< #nodes x kNodeAttributeCount
+  std::vector<std::int32_t> edges;            ///< #edges x 2
+  std::vector<double> edge_attributes;        ///< #edges x kEdgeAttributeCount
+  std::vector<std::int32_t> feature_points;   ///< vertex ids (-1: a vertex added to close a hole)
+  std::vector<std::int64_t> skeleton_offset;  ///< #nodes + 1, into skeleton_points rows
+  std::vector<double> skeleton_points;        ///< #points x 3
+  std::vector<double> signature;              ///< kSignatureLength (NaN when failed)
 
   std::int32_t num_nodes() const { return static_cast<std::int32_t>(nodes.size() / kNodeColumnCount); }
   std::int32_t num_edges() const { return static_cast<std::int32_t>(edges.size() / 2); }

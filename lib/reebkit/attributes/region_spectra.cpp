@@ -58,7 +58,8 @@ Mesh largest_piece(const Mesh& part) {
   const ComponentLabels pieces = connected_components(part.triangles, part.num_vertices());
   if (pieces.count <= 1) return part;
   std::vector<double> area(at(pieces.count), 0.0);
-  for (Index t = 0; t < part.num_triangles(); ++t) area[at(pieces.vertex_component[at(part.triangles(t, 0))])] += triangle_area(part, t);
+  for (Index t = 0; t < part.num_triangles(); ++t)
+    area[at(pieces.vertex_component[at(part.triangles(t, 0))])] += triangle_area(part, t);
   const Index keep = static_cast<Index>(std::max_element(area.begin(), area.end()) - area.begin());
   std::vector<Index> kept;
   for (Index t = 0; t < part.num_triangles(); ++t)
@@ -99,7 +100,9 @@ SurfaceSpectra surface_spectra(const Mesh& mesh, const std::vector<Index>& verte
     total_area += area;
     Index label[3];
     for (int c = 0; c < 3; ++c) label[c] = vertex_region[at(canonical.original_vertex[at(surface.triangles(t, c))])];
-    const Index r = label[0] == label[1] || label[0] == label[2] ? label[0] : label[1] == label[2] ? label[1] : kInvalidIndex;
+    const Index r = label[0] == label[1] || label[0] == label[2] ? label[0]
+                    : label[1] == label[2]                       ? label[1]
+                                                                 : kInvalidIndex;
     if (r == kInvalidIndex) continue;
     region_triangles[at(r)].push_back(t);
     region_area[at(r)] += area;
@@ -113,9 +116,10 @@ SurfaceSpectra surface_spectra(const Mesh& mesh, const std::vector<Index>& verte
   // where the decimation leaves a triangle it cannot repair, or where it
   // cuts the piece in two (a thin part collapsed: each further piece adds a
   // zero eigenvalue): slower, not wrong.
-  const double ratio = canonical.axis_gap < options.min_axis_gap
-                           ? 1.0
-                           : std::min(1.0, static_cast<double>(options.coarse_vertices) / static_cast<double>(mesh.num_vertices()));
+  const double ratio =
+      canonical.axis_gap < options.min_axis_gap
+          ? 1.0
+          : std::min(1.0, static_cast<double>(options.coarse_vertices) / static_cast<double>(mesh.num_vertices()));
   const auto coarsened = [ratio](const Mesh& m) {
     if (ratio >= 1.0) return m;
     try {

@@ -218,8 +218,7 @@ void check_extraction(const std::vector<MeshInput>& inputs, const std::vector<Ps
                       const std::filesystem::path& output, const ExtractionOptions& options) {
   if (options.batch_size < 1) throw InvalidArgument("extract_collection: batch_size must be >= 1");
   if (options.threads < 0) throw InvalidArgument("extract_collection: threads must be >= 0");
-  if (!(options.checkpoint_seconds >= 0))
-    throw InvalidArgument("extract_collection: checkpoint_seconds must be >= 0");
+  if (!(options.checkpoint_seconds >= 0)) throw InvalidArgument("extract_collection: checkpoint_seconds must be >= 0");
   if (!options.analysis.reeb_graph) throw InvalidArgument("extract_collection: the analysis must build the Reeb graph");
   if (inputs.empty())
     throw InvalidArgument(output.string() + ": no mesh to index (the inputs hold no .off .obj .ply or .stl file)");
@@ -387,9 +386,10 @@ ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const
       throw Error(std::string(e.what()) + "\n" + target.string() +
                   " is left as it was: reeb index --resume starts the update again");
     }
-    const std::string previous = target == output ? ""
-                                 : output.string() + (std::filesystem::exists(output) ? " is left as it was; "
-                                                                                      : " is not written; ");
+    const std::string previous =
+        target == output
+            ? ""
+            : output.string() + (std::filesystem::exists(output) ? " is left as it was; " : " is not written; ");
     throw Error(std::string(e.what()) + "\n" + previous + target.string() +
                 " holds the entries of the last checkpoint: reeb index --resume goes on from there");
   }
@@ -406,7 +406,6 @@ ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const
   if (options.progress && todo.empty()) options.progress(progress);
   return summary;
 }
-
 
 ExtractionSummary extract_shard(const std::vector<MeshInput>& inputs, const std::vector<PsbClass>& classes,
                                 const std::filesystem::path& shard, const InputClaim& claim,

@@ -21,7 +21,7 @@
 namespace reebkit {
 
 struct ExtractionOptions {
-  int threads = 0;                ///< workers computing meshes; 0 = omp_get_max_threads()
+  int threads = 0;  ///< workers computing meshes; 0 = omp_get_max_threads()
   /// Keep the entries already in the output file and skip every input whose
   /// name and content hash match one (a failed one too: same bytes, same
   /// failure). See extract_collection for changed files.
@@ -41,12 +41,12 @@ struct FailedMesh {
 };
 
 struct ExtractionSummary {
-  std::int64_t ok = 0;              ///< meshes computed into an entry with a graph
-  std::vector<FailedMesh> failed;   ///< meshes computed into a failed entry, in input order
-  std::int64_t skipped = 0;         ///< inputs already in the file (resume): not computed
-  std::int64_t kept = 0;            ///< entries of the file kept (resume), skipped ones included
-  double seconds = 0;               ///< wall time of the whole call
-  double write_seconds = 0;         ///< of which the writer thread spent in CollectionWriter calls
+  std::int64_t ok = 0;             ///< meshes computed into an entry with a graph
+  std::vector<FailedMesh> failed;  ///< meshes computed into a failed entry, in input order
+  std::int64_t skipped = 0;        ///< inputs already in the file (resume): not computed
+  std::int64_t kept = 0;           ///< entries of the file kept (resume), skipped ones included
+  double seconds = 0;              ///< wall time of the whole call
+  double write_seconds = 0;        ///< of which the writer thread spent in CollectionWriter calls
   /// Every mesh computed failed and the file kept none: the output was left
   /// as it was (not created, not replaced).
   bool all_failed = false;
@@ -123,7 +123,6 @@ bool opens_as_collection(const std::filesystem::path& path);
 /// message then says which file holds the entries of the last checkpoint).
 ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const std::vector<PsbClass>& classes,
                                      const std::filesystem::path& output, const ExtractionOptions& options = {});
-
 
 /// The next input to compute (an index into the inputs), or none when the
 /// job has no input left.

@@ -20,8 +20,7 @@ std::string lower(std::string text) {
 
 bool is_mesh_file(const fs::path& path) {
   const std::string ext = lower(path.extension().string());
-  return std::any_of(std::begin(kMeshExtensions), std::end(kMeshExtensions),
-                     [&](const char* e) { return ext == e; });
+  return std::any_of(std::begin(kMeshExtensions), std::end(kMeshExtensions), [&](const char* e) { return ext == e; });
 }
 
 bool is_list_file(const fs::path& path) {
@@ -36,7 +35,8 @@ void list_folder(const fs::path& folder, std::vector<MeshInput>& out) {
     if (e.is_regular_file() && is_mesh_file(e.path()))
       found.push_back({e.path(), e.path().lexically_relative(folder).generic_string()});
   }
-  std::sort(found.begin(), found.end(), [](const MeshInput& a, const MeshInput& b) { return natural_less(a.name, b.name); });
+  std::sort(found.begin(), found.end(),
+            [](const MeshInput& a, const MeshInput& b) { return natural_less(a.name, b.name); });
   out.insert(out.end(), found.begin(), found.end());
 }
 

@@ -98,8 +98,7 @@ ShardedJob plan_sharded_job(const std::vector<MeshInput>& inputs, const fs::path
     const CollectionReader reader(source);
     refuse_other_analysis(source, reader.provenance(), options.analysis);
     for (std::int64_t i = 0; i < reader.size(); ++i)
-      held[reader.names()[static_cast<std::size_t>(i)]].push_back(
-          reader.content_hashes()[static_cast<std::size_t>(i)]);
+      held[reader.names()[static_cast<std::size_t>(i)]].push_back(reader.content_hashes()[static_cast<std::size_t>(i)]);
   }
   std::vector<std::size_t> known;  // the inputs an earlier run holds an entry of
   std::vector<MeshInput> to_hash;
@@ -167,7 +166,8 @@ ExtractionSummary merge_shards(const std::vector<MeshInput>& inputs, const std::
     for (std::int64_t i = 0; i < base->reader().size(); ++i) {
       const std::string& name = base->reader().names()[static_cast<std::size_t>(i)];
       const auto current = job.hashes.find(name);
-      if (current != job.hashes.end() && current->second != base->reader().content_hashes()[static_cast<std::size_t>(i)])
+      if (current != job.hashes.end() &&
+          current->second != base->reader().content_hashes()[static_cast<std::size_t>(i)])
         continue;  // the input changed: its new entry comes from a shard
       append(base->entry(i));
       ++summary.kept;

@@ -13,10 +13,7 @@ std::string located(const std::string& file, std::uint64_t line, const std::stri
 }  // namespace
 
 MeshFileError::MeshFileError(std::string file, std::uint64_t line, std::string problem)
-    : Error(located(file, line, problem)),
-      file_(std::move(file)),
-      line_(line),
-      problem_(std::move(problem)) {}
+    : Error(located(file, line, problem)), file_(std::move(file)), line_(line), problem_(std::move(problem)) {}
 
 MeshFileError::MeshFileError(std::string file, std::string problem)
     : MeshFileError(std::move(file), 0, std::move(problem)) {}

@@ -14,12 +14,12 @@ namespace reebkit {
 /// file (0-based indices, no validation beyond index range), polygons in CSR
 /// form. Polygon p has vertices face_vertex[face_offset[p] .. face_offset[p+1]).
 struct PolygonSoup {
-  Points vertices;                  ///< #V x 3
+  Points vertices;                    ///< #V x 3
   std::vector<Index> face_offset{0};  ///< #P + 1, starts with 0
-  std::vector<Index> face_vertex;   ///< concatenated polygon vertex indices
+  std::vector<Index> face_vertex;     ///< concatenated polygon vertex indices
   /// Optional per-vertex RGB colors in [0,1] (#V x 3) when the file had them, else empty.
   Points vertex_colors;
-  std::string source;               ///< file the soup came from ("" = built in memory)
+  std::string source;  ///< file the soup came from ("" = built in memory)
 
   Index num_vertices() const { return static_cast<Index>(vertices.rows()); }
   Index num_polygons() const { return static_cast<Index>(face_offset.size()) - 1; }

@@ -28,9 +28,7 @@ struct OptionRange {
   double highest = std::numeric_limits<double>::infinity();
   bool above_lowest = false;
 
-  bool holds(double x) const {
-    return std::isfinite(x) && (above_lowest ? x > lowest : x >= lowest) && x <= highest;
-  }
+  bool holds(double x) const { return std::isfinite(x) && (above_lowest ? x > lowest : x >= lowest) && x <= highest; }
   /// "[0, inf)", "(0, 1]".
   std::string text() const {
     const auto bound = [](double x) { return std::isinf(x) ? std::string("inf") : option_text(x); };
@@ -41,8 +39,8 @@ struct OptionRange {
 /// One option of `Options`.
 template <typename Options>
 struct OptionField {
-  std::string name;  ///< snake_case, as stored and as a Python keyword; the flag is --name with '-' for '_'
-  std::string help;  ///< one line for --help and the docs
+  std::string name;   ///< snake_case, as stored and as a Python keyword; the flag is --name with '-' for '_'
+  std::string help;   ///< one line for --help and the docs
   OptionRange range;  ///< a number's values (a text option: those its parser accepts)
   /// The option's value in `options`: its kind (integer, number, text) is
   /// the option's for every Options.

@@ -29,7 +29,8 @@ OptionValue option_value_from_text(const OptionValue& kind, const std::string& t
     const double number = std::strtod(text.c_str(), &at);
     if (at == end && !text.empty()) return number;
   }
-  throw InvalidArgument("'" + text + "' is not " + (std::holds_alternative<std::int64_t>(kind) ? "an integer" : "a number"));
+  throw InvalidArgument("'" + text + "' is not " +
+                        (std::holds_alternative<std::int64_t>(kind) ? "an integer" : "a number"));
 }
 
 const char* option_kind(const OptionValue& value) {

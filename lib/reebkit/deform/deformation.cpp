@@ -32,7 +32,7 @@ std::vector<char> component_of(Index node, const std::vector<std::vector<Index>>
   in[static_cast<std::size_t>(node)] = 1;
   for (std::size_t n = static_cast<std::size_t>(node) + 1; n < parents.size(); ++n)
     in[n] = !parents[n].empty() && std::all_of(parents[n].begin(), parents[n].end(),
-                                              [&](Index p) { return in[static_cast<std::size_t>(p)] != 0; });
+                                               [&](Index p) { return in[static_cast<std::size_t>(p)] != 0; });
   return in;
 }
 
@@ -93,7 +93,9 @@ Deformation plan_deformation(const MeshAnalysis& analysis, const DeformOptions& 
 
   // The component's border: its vertices next to a vertex outside it; those
   // next to a parent region form the attach loop, the others are held.
-  const auto inside = [&](Index v) { return in[static_cast<std::size_t>(g.vertex_node[static_cast<std::size_t>(v)])] != 0; };
+  const auto inside = [&](Index v) {
+    return in[static_cast<std::size_t>(g.vertex_node[static_cast<std::size_t>(v)])] != 0;
+  };
   const auto in_parent = [&](Index v) {
     const Index n = g.vertex_node[static_cast<std::size_t>(v)];
     return std::find(node_parents.begin(), node_parents.end(), n) != node_parents.end();
@@ -109,8 +111,8 @@ Deformation plan_deformation(const MeshAnalysis& analysis, const DeformOptions& 
       held.push_back(v);
   }
   const ReebNode& node = g.nodes[static_cast<std::size_t>(options.node)];
-  plan.pivot = node.skeleton.empty() ? Vec3(analysis.mesh.vertices.row(node.birth_vertex).transpose())
-                                     : node.skeleton.front();
+  plan.pivot =
+      node.skeleton.empty() ? Vec3(analysis.mesh.vertices.row(node.birth_vertex).transpose()) : node.skeleton.front();
 
   if (options.axis != Vec3::Zero()) {
     plan.axis = options.axis.normalized();

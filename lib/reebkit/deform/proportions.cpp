@@ -58,7 +58,8 @@ void plan_component(const MeshAnalysis& a, Index node, double falloff, Proportio
   const DistanceField from_loop = dijkstra(a.graph, plan.anchor);
   for (Index v = 0; v < a.mesh.num_vertices(); ++v) {
     const auto i = static_cast<std::size_t>(v);
-    if (std::binary_search(plan.nodes.begin(), plan.nodes.end(), a.reeb.vertex_node[i])) plan.position[i] = from_loop.distance[i];
+    if (std::binary_search(plan.nodes.begin(), plan.nodes.end(), a.reeb.vertex_node[i]))
+      plan.position[i] = from_loop.distance[i];
   }
 }
 
@@ -84,8 +85,10 @@ ProportionPlan plan_proportions(const MeshAnalysis& reference, const ProportionO
   plan.position.assign(static_cast<std::size_t>(nv), 0.0);
   if (options.part == ProportionPart::Region)
     plan_region(reference, options.node, options.falloff, plan);
-  else if (std::none_of(g.edges.begin(), g.edges.end(), [&](const std::array<Index, 2>& e) { return e[1] == options.node; }))
-    throw InvalidArgument("plan_proportions: node " + std::to_string(options.node) + " is a root (the region around the minimum of f_q): it has no " +
+  else if (std::none_of(g.edges.begin(), g.edges.end(),
+                        [&](const std::array<Index, 2>& e) { return e[1] == options.node; }))
+    throw InvalidArgument("plan_proportions: node " + std::to_string(options.node) +
+                          " is a root (the region around the minimum of f_q): it has no " +
                           "parent to attach a component to; its region (ProportionPart::Region) can change");
   else
     plan_component(reference, options.node, options.falloff, plan);
@@ -107,7 +110,8 @@ ProportionPlan plan_proportions(const MeshAnalysis& reference, const ProportionO
   for (Index v = 0; v < nv; ++v) {
     if (!in_part(v)) continue;
     const auto i = static_cast<std::size_t>(v);
-    const Index s = width > 0.0 ? std::min<Index>(options.levels - 1, static_cast<Index>((plan.position[i] - low) / width)) : 0;
+    const Index s =
+        width > 0.0 ? std::min<Index>(options.levels - 1, static_cast<Index>((plan.position[i] - low) / width)) : 0;
     slice[i] = s;
     sum[static_cast<std::size_t>(s)] += plan.position[i];
     ++count[static_cast<std::size_t>(s)];
@@ -127,8 +131,8 @@ ProportionPlan plan_proportions(const MeshAnalysis& reference, const ProportionO
 Mesh apply_proportions(const Mesh& mesh, const ProportionPlan& plan) {
   const Index nv = mesh.num_vertices();
   if (plan.weight.size() != static_cast<std::size_t>(nv) || plan.level.size() != static_cast<std::size_t>(nv))
-    throw InvalidArgument("apply_proportions: " + mesh.source + " has " + std::to_string(nv) +
-                          " vertices, the plan " + std::to_string(plan.weight.size()));
+    throw InvalidArgument("apply_proportions: " + mesh.source + " has " + std::to_string(nv) + " vertices, the plan " +
+                          std::to_string(plan.weight.size()));
   if (plan.anchor.empty()) throw InvalidArgument("apply_proportions: the plan has no anchor vertex (no pivot)");
   Mesh out = mesh;
   if (plan.scale == 1.0 && plan.thickness == 1.0) return out;
@@ -159,9 +163,11 @@ Mesh apply_proportions(const Mesh& mesh, const ProportionPlan& plan) {
       Vec3 center = skeleton.front(), direction = Vec3::Zero();
       if (levels >= 2) {
         const auto upper = std::upper_bound(plan.level_position.begin(), plan.level_position.end(), plan.position[i]);
-        const std::size_t j = std::clamp<std::size_t>(static_cast<std::size_t>(upper - plan.level_position.begin()), 1, levels - 1) - 1;
-        const double t = std::clamp(
-            (plan.position[i] - plan.level_position[j]) / (plan.level_position[j + 1] - plan.level_position[j]), 0.0, 1.0);
+        const std::size_t j =
+            std::clamp<std::size_t>(static_cast<std::size_t>(upper - plan.level_position.begin()), 1, levels - 1) - 1;
+        const double t = std::clamp((plan.position[i] - plan.level_position[j]) /
+                                        (plan.level_position[j + 1] - plan.level_position[j]),
+                                    0.0, 1.0);
         center = (1.0 - t) * skeleton[j] + t * skeleton[j + 1];
         direction = (skeleton[j + 1] - skeleton[j]).normalized();
       }

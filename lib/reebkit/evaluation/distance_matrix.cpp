@@ -28,13 +28,11 @@ DistanceMatrix read_psb_matrix(const std::filesystem::path& path) {
   const std::string bytes = read_file_bytes(path);
   if (bytes.empty()) throw Error(path.string() + ": empty distance matrix");
   if (bytes.size() % sizeof(float) != 0)
-    throw Error(path.string() + ": " + std::to_string(bytes.size()) +
-                " bytes is not a whole number of float32 values");
+    throw Error(path.string() + ": " + std::to_string(bytes.size()) + " bytes is not a whole number of float32 values");
   const std::size_t values = bytes.size() / sizeof(float);
   const auto n = static_cast<std::size_t>(std::llround(std::sqrt(static_cast<double>(values))));
   if (n * n != values)
-    throw Error(path.string() + ": " + std::to_string(values) +
-                " float32 values do not make a square N x N matrix");
+    throw Error(path.string() + ": " + std::to_string(values) + " float32 values do not make a square N x N matrix");
   DistanceMatrix out(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
   ByteReader reader(bytes, /*big_endian=*/false);
   for (std::size_t i = 0; i < values; ++i) out.data()[i] = reader.read<float>();

@@ -35,8 +35,8 @@ DistanceMatrix local_scaling(const DistanceMatrix& distances, int k) {
   DistanceMatrix out(n, n);
   for (Eigen::Index i = 0; i < n; ++i)
     for (Eigen::Index j = 0; j < n; ++j)
-      out(i, j) = static_cast<float>(distances(i, j) /
-                                     std::sqrt(sigma[static_cast<std::size_t>(i)] * sigma[static_cast<std::size_t>(j)]));
+      out(i, j) = static_cast<float>(
+          distances(i, j) / std::sqrt(sigma[static_cast<std::size_t>(i)] * sigma[static_cast<std::size_t>(j)]));
   return out;
 }
 

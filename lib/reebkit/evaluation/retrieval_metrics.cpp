@@ -18,13 +18,11 @@ std::vector<char> relevance(const DistanceMatrix& distances, const ModelClasses&
   for (Index j = 0; j < n; ++j)
     if (j != query) ranking.push_back(j);
   const auto row = distances.row(query);
-  std::sort(ranking.begin(), ranking.end(), [&row](Index a, Index b) {
-    return row(a) < row(b) || (row(a) == row(b) && a < b);
-  });
+  std::sort(ranking.begin(), ranking.end(),
+            [&row](Index a, Index b) { return row(a) < row(b) || (row(a) == row(b) && a < b); });
   const Index c = classes.of_model[static_cast<std::size_t>(query)];
   std::vector<char> rel(ranking.size());
-  for (std::size_t k = 0; k < ranking.size(); ++k)
-    rel[k] = classes.of_model[static_cast<std::size_t>(ranking[k])] == c;
+  for (std::size_t k = 0; k < ranking.size(); ++k) rel[k] = classes.of_model[static_cast<std::size_t>(ranking[k])] == c;
   return rel;
 }
 

@@ -68,8 +68,8 @@ struct QueryScores {
 
 struct ClassScores {
   std::string name;
-  Index size = 0;     ///< models in the class
-  Index queries = 0;  ///< 0 when the class is too small to be a query
+  Index size = 0;        ///< models in the class
+  Index queries = 0;     ///< 0 when the class is too small to be a query
   RetrievalScores mean;  ///< mean over the class's queries (zeros when none)
 };
 

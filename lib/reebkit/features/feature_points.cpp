@@ -59,8 +59,8 @@ DiameterEnds find_diameter_ends(GeodesicSolver& solver, Index seed, int max_extr
   const DistanceField& field = solver.run({seed});
   const auto farthest = [&] { return how.grid_ties ? grid_farthest(field.distance) : field.farthest; };
   if (field.reached != static_cast<Index>(field.distance.size()))
-    throw InvalidArgument("extract_feature_points: the mesh graph is not connected (" +
-                          std::to_string(field.reached) + " of " + std::to_string(field.distance.size()) +
+    throw InvalidArgument("extract_feature_points: the mesh graph is not connected (" + std::to_string(field.reached) +
+                          " of " + std::to_string(field.distance.size()) +
                           " vertices reachable); extract each component on its own");
   e.passes = 1;
   e.s1 = seed;
@@ -204,7 +204,9 @@ FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOption
                  std::back_inserter(candidates));
   const auto at = [](const std::vector<double>& a, Index v) { return a[static_cast<std::size_t>(v)]; };
   candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
-                                  [&](Index v) { return !(at(to_e1, v) < radius_units && at(to_e2, v) < radius_units); }),
+                                  [&](Index v) {
+                                    return !(at(to_e1, v) < radius_units && at(to_e2, v) < radius_units);
+                                  }),
                    candidates.end());
   // Greedy order: extrema of both functions first (gap 0), then the closest
   // pairs; among equals the more extreme vertex (larger f1 + f2), then the id.

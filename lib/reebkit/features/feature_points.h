@@ -71,7 +71,7 @@ struct FeaturePoints {
   std::vector<Index> extrema1;
   /// E2: local minima and maxima of f2 (with persistence >= min_persistence x diameter)
   std::vector<Index> extrema2;
-  int sweeps = 0;               ///< full geodesic passes spent finding v_s1, v_s2, f1 and f2
+  int sweeps = 0;  ///< full geodesic passes spent finding v_s1, v_s2, f1 and f2
   /// The method of f1, f2 and the epsilon balls (FeatureOptions::geodesic).
   Geodesic geodesic = Geodesic::FastMarching;
   /// f1 and f2 themselves (#V each, distances from source1 and from

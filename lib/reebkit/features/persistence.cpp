@@ -15,8 +15,8 @@ namespace {
 // from the bottom (minima: sublevel sets). A component is kept under the root
 // it was born with, its extremum, so the elder of two roots is the one met
 // first by the sweep.
-std::vector<PersistencePair> sweep(const MeshGraph& graph, const std::vector<double>& f, const std::vector<Index>& order,
-                                   const std::vector<Index>& position, int sign) {
+std::vector<PersistencePair> sweep(const MeshGraph& graph, const std::vector<double>& f,
+                                   const std::vector<Index>& order, const std::vector<Index>& position, int sign) {
   const std::size_t n = order.size();
   std::vector<Index> parent(n, kInvalidIndex);  // kInvalidIndex: not swept yet
   const auto find = [&parent](Index x) {
@@ -53,7 +53,8 @@ std::vector<PersistencePair> sweep(const MeshGraph& graph, const std::vector<dou
     parent[static_cast<std::size_t>(v)] = root == kInvalidIndex ? v : root;  // no swept neighbour: born
   }
   for (std::size_t v = 0; v < n; ++v)
-    if (parent[v] == static_cast<Index>(v)) pairs.push_back({static_cast<Index>(v), kInvalidIndex, PersistencePair{}.persistence});
+    if (parent[v] == static_cast<Index>(v))
+      pairs.push_back({static_cast<Index>(v), kInvalidIndex, PersistencePair{}.persistence});
   std::sort(pairs.begin(), pairs.end(),
             [](const PersistencePair& a, const PersistencePair& b) { return a.extremum < b.extremum; });
   return pairs;
@@ -83,8 +84,8 @@ std::vector<Index> persistent_extrema(const MeshGraph& graph, const std::vector<
     throw InvalidArgument("persistent_extrema: min_persistence must be >= 0, got " + std::to_string(min_persistence));
   const Index n = graph.num_vertices();
   if (static_cast<Index>(f.size()) != n)
-    throw InvalidArgument("persistent_extrema: f has " + std::to_string(f.size()) + " values for " +
-                          std::to_string(n) + " vertices");
+    throw InvalidArgument("persistent_extrema: f has " + std::to_string(f.size()) + " values for " + std::to_string(n) +
+                          " vertices");
   // No sort of the whole mesh: an extremum e persists less than the threshold
   // exactly when a vertex beyond it (sos order) can be reached from it
   // through vertices w with |f(e) - f(w)| < min_persistence (the path's
@@ -105,7 +106,8 @@ std::vector<Index> persistent_extrema(const MeshGraph& graph, const std::vector<
       std::pop_heap(heap.begin(), heap.end(), heap_order);
       const Index v = heap.back();
       heap.pop_back();
-      for (Index i = graph.offset[static_cast<std::size_t>(v)]; i < graph.offset[static_cast<std::size_t>(v) + 1]; ++i) {
+      for (Index i = graph.offset[static_cast<std::size_t>(v)]; i < graph.offset[static_cast<std::size_t>(v) + 1];
+           ++i) {
         const Index w = graph.neighbor[static_cast<std::size_t>(i)];
         if (mark[static_cast<std::size_t>(w)] == search || !(sign * (at(e) - at(w)) < min_persistence)) continue;
         if (beyond(w, e)) return false;

@@ -15,8 +15,7 @@ using DijkstraOptions = GeodesicOptions;
 /// every vertex, with a radix heap (radix_heap.h). Deterministic: the same
 /// inputs give the same result, nearest sources included (between sources at
 /// exactly the same distance, the heap's order decides). O(E + 64 V).
-DistanceField dijkstra(const MeshGraph& graph, const std::vector<Index>& sources,
-                       const DijkstraOptions& options = {});
+DistanceField dijkstra(const MeshGraph& graph, const std::vector<Index>& sources, const DijkstraOptions& options = {});
 
 /// Single-source convenience overload.
 DistanceField dijkstra(const MeshGraph& graph, Index source, const DijkstraOptions& options = {});

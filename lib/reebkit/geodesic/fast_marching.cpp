@@ -33,7 +33,7 @@ inline bool triangle_update(double a, double b, double e1, double e2, double e3,
                             bool& nearer_v) {
   const double e1s = e1 * e1, e2s = e2 * e2, e3s = e3 * e3;
   const double p = 0.5 * (e1s + e2s - e3s);
-  const double det = e1s * e2s - p * p;  // |P x Q|^2: (2 area)^2
+  const double det = e1s * e2s - p * p;          // |P x Q|^2: (2 area)^2
   if (!(det > 1e-12 * e1s * e2s)) return false;  // degenerate, or the link length is missing (NaN)
   // A causal wave crosses the side vu, where T >= min(a, b), and then
   // travels at least the height of w over vu: t >= min(a, b) + sqrt(det) / e3.
@@ -46,7 +46,7 @@ inline bool triangle_update(double a, double b, double e1, double e2, double e3,
   const double disc = qb * qb - e3s * (e1s * delta * delta - det);
   if (disc < 0.0) return false;
   const double s = (qb + std::sqrt(disc)) / e3s;
-  if (s < 0.0 || s < delta) return false;  // t below a corner's value: not causal
+  if (s < 0.0 || s < delta) return false;          // t below a corner's value: not causal
   const double alpha = e2s * s - p * (s - delta);  // det * alpha
   const double beta = e1s * (s - delta) - p * s;   // det * beta
   if (alpha < 0.0 || beta < 0.0) return false;     // the wave comes from outside the triangle
@@ -129,7 +129,7 @@ FastMarchingSolver::FastMarchingSolver(const MeshGraph& graph)
   // virtual triangles (w, v, y) and (w, y, u) at both its corners other than w.
   struct Split {
     Index w, v, u, y;
-    bool one_triangle;           // the unfolded strip is the triangle across vu alone
+    bool one_triangle;          // the unfolded strip is the triangle across vu alone
     double wv, wu, wy, vy, uy;  // side lengths in the unfolded plane
   };
   std::vector<Split> split;
@@ -141,7 +141,7 @@ FastMarchingSolver::FastMarchingSolver(const MeshGraph& graph)
       const double e1 = graph.length[static_cast<std::size_t>(i)], e2 = graph.length[static_cast<std::size_t>(j)];
       const double e3 = link_length_[static_cast<std::size_t>(i)];
       const double dot = 0.5 * (e1 * e1 + e2 * e2 - e3 * e3);  // |wv| |wu| cos(angle at w)
-      if (!(dot < kSplitCosine * e1 * e2)) continue;  // acute, nearly right, or no third side
+      if (!(dot < kSplitCosine * e1 * e2)) continue;           // acute, nearly right, or no third side
       const double sine = std::sqrt(std::max(0.0, e1 * e1 * e2 * e2 - dot * dot));
       if (!(sine > 0.0)) continue;  // degenerate
       // w at the origin, v on the x axis, u above it; the section is every
@@ -169,7 +169,8 @@ FastMarchingSolver::FastMarchingSolver(const MeshGraph& graph)
   virtual_offset_.assign(static_cast<std::size_t>(n) + 1, 0);
   for (const Split& c : split)
     for (const Index trigger : {c.v, c.y, c.y, c.u}) ++virtual_offset_[static_cast<std::size_t>(trigger) + 1];
-  for (Index v = 0; v < n; ++v) virtual_offset_[static_cast<std::size_t>(v) + 1] += virtual_offset_[static_cast<std::size_t>(v)];
+  for (Index v = 0; v < n; ++v)
+    virtual_offset_[static_cast<std::size_t>(v) + 1] += virtual_offset_[static_cast<std::size_t>(v)];
   virtual_.resize(4 * split.size());
   std::vector<Index> fill(virtual_offset_.begin(), virtual_offset_.end() - 1);
   const auto put = [&](Index trigger, const VirtualTriangle& t) {
@@ -226,8 +227,8 @@ const DistanceField& FastMarchingSolver::run(const std::vector<Index>& sources, 
       const VirtualTriangle& vt = virtual_[static_cast<std::size_t>(k)];
       const Index w = vt.target, u = vt.other;
       if (alive[w] || !alive[u] || (separate && nearest[u] != nearest[v])) continue;
-      if (labels && (labels[w] != options.label || vt.strip_vertex == kInvalidIndex ||
-                     labels[vt.strip_vertex] != options.label))
+      if (labels &&
+          (labels[w] != options.label || vt.strip_vertex == kInvalidIndex || labels[vt.strip_vertex] != options.label))
         continue;
       double t;
       bool nearer_v;

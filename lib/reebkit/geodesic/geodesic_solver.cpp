@@ -61,8 +61,12 @@ GeodesicSolver::RunArrays GeodesicSolver::start(const std::vector<Index>& source
     if (field_.nearest_source[static_cast<std::size_t>(v)] != kInvalidIndex) continue;  // listed twice
     improve(v, 0.0, static_cast<Index>(s));
   }
-  return {labels,           field_.distance.data(), field_.nearest_source.data(), graph_.offset.data(),
-          graph_.neighbor.data(), graph_.length.data()};
+  return {labels,
+          field_.distance.data(),
+          field_.nearest_source.data(),
+          graph_.offset.data(),
+          graph_.neighbor.data(),
+          graph_.length.data()};
 }
 
 DistanceField GeodesicSolver::release() {

@@ -55,9 +55,10 @@ struct GeodesicOptions {
 struct DistanceField {
   std::vector<double> distance;       ///< #V, +inf where unreached
   std::vector<Index> nearest_source;  ///< #V, index into the source list (not a vertex id); -1 where unreached
-  Index farthest = kInvalidIndex;     ///< reached vertex of largest (distance, id): ties go to the largest id, as in sos_less
-  double max_distance = 0.0;          ///< distance[farthest]
-  Index reached = 0;                  ///< number of vertices within the radius
+  Index farthest =
+      kInvalidIndex;          ///< reached vertex of largest (distance, id): ties go to the largest id, as in sos_less
+  double max_distance = 0.0;  ///< distance[farthest]
+  Index reached = 0;          ///< number of vertices within the radius
 };
 
 /// A solver for many runs on one graph: buffers are allocated once and a run

@@ -13,7 +13,8 @@ std::uint64_t hash_bytes(std::string_view bytes) {
   // on the machine), then the remaining bytes one by one.
   for (; i + 8 <= bytes.size(); i += 8) {
     std::uint64_t word = 0;
-    for (int k = 7; k >= 0; --k) word = (word << 8) | static_cast<unsigned char>(bytes[i + static_cast<std::size_t>(k)]);
+    for (int k = 7; k >= 0; --k)
+      word = (word << 8) | static_cast<unsigned char>(bytes[i + static_cast<std::size_t>(k)]);
     h = (h ^ word) * kPrime;
   }
   for (; i < bytes.size(); ++i) h = (h ^ static_cast<unsigned char>(bytes[i])) * kPrime;

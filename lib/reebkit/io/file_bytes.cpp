@@ -120,7 +120,7 @@ void check_output_file(const fs::path& path, const std::vector<fs::path>& inputs
   const fs::path folder = folder_of(path);
   if (!fs::is_directory(folder, ec))
     refuse("cannot write it: " + (fs::exists(folder, ec) ? folder.string() + " is a file, not a folder"
-                                                          : "the folder " + folder.string() + " does not exist"));
+                                                         : "the folder " + folder.string() + " does not exist"));
   // Creating a file there tells (access() says yes to root on a folder that cannot hold files, e.g. /proc).
   fs::path probe;
   const int fd = create_temporary_beside(path, probe);

@@ -24,7 +24,8 @@ std::string lower_extension(const std::filesystem::path& path) {
 
 /// "<problem> '<extension>' (supported: <list>)", or "no file extension (supported: <list>)".
 std::string unsupported(const std::string& extension, const std::string& problem, const std::string& supported) {
-  return (extension.empty() ? "no file extension" : problem + " '" + extension + "'") + " (supported: " + supported + ")";
+  return (extension.empty() ? "no file extension" : problem + " '" + extension + "'") + " (supported: " + supported +
+         ")";
 }
 
 /// The reader of `path`'s format, after its extension; throws MeshFileError

@@ -29,8 +29,8 @@ struct TypeInfo {
 
 /// Indexed by Type.
 constexpr TypeInfo kTypes[] = {
-    {"char", "int8", 1, true},   {"uchar", "uint8", 1, true},   {"short", "int16", 2, true},
-    {"ushort", "uint16", 2, true}, {"int", "int32", 4, true},   {"uint", "uint32", 4, true},
+    {"char", "int8", 1, true},      {"uchar", "uint8", 1, true},     {"short", "int16", 2, true},
+    {"ushort", "uint16", 2, true},  {"int", "int32", 4, true},       {"uint", "uint32", 4, true},
     {"float", "float32", 4, false}, {"double", "float64", 8, false},
 };
 
@@ -403,8 +403,8 @@ void check_vertex_data(const Mesh& mesh, const PlyVertexData& data) {
   std::vector<std::string_view> names = {"x", "y", "z", "red", "green", "blue"};
   for (const auto& [name, values] : data.scalars) {
     if (values.size() != num_vertices) {
-      throw InvalidArgument("write_ply: scalar '" + name + "' has " + std::to_string(values.size()) +
-                            " values for " + std::to_string(num_vertices) + " vertices");
+      throw InvalidArgument("write_ply: scalar '" + name + "' has " + std::to_string(values.size()) + " values for " +
+                            std::to_string(num_vertices) + " vertices");
     }
     if (name.empty() || name.find_first_of(" \t\r\n") != std::string::npos) {
       throw InvalidArgument("write_ply: bad scalar name '" + name + "'");
@@ -424,8 +424,8 @@ std::string header_text(const Mesh& mesh, const PlyVertexData& data, PlyEncoding
          "\nproperty double x\nproperty double y\nproperty double z\n";
   if (data.colors.rows() > 0) out += "property uchar red\nproperty uchar green\nproperty uchar blue\n";
   for (const auto& scalar : data.scalars) out += "property double " + scalar.first + "\n";
-  out += "element face " + std::to_string(mesh.num_triangles()) +
-         "\nproperty list uchar int vertex_indices\nend_header\n";
+  out +=
+      "element face " + std::to_string(mesh.num_triangles()) + "\nproperty list uchar int vertex_indices\nend_header\n";
   return out;
 }
 
@@ -445,15 +445,13 @@ PolygonSoup parse_ply(std::string_view bytes, std::string source) {
     AsciiValues values(in);
     return read_body(values, header, body_bytes, std::move(source));
   }
-  BinaryValues values(bytes.substr(bytes.size() - body_bytes), header.encoding == PlyEncoding::BinaryBigEndian,
-                      source);
+  BinaryValues values(bytes.substr(bytes.size() - body_bytes), header.encoding == PlyEncoding::BinaryBigEndian, source);
   return read_body(values, header, body_bytes, std::move(source));
 }
 
 PolygonSoup read_ply(const std::filesystem::path& path) { return parse_ply(read_file_bytes(path), path.string()); }
 
-void write_ply(const std::filesystem::path& path, const Mesh& mesh, const PlyVertexData& data,
-               PlyEncoding encoding) {
+void write_ply(const std::filesystem::path& path, const Mesh& mesh, const PlyVertexData& data, PlyEncoding encoding) {
   check_vertex_data(mesh, data);
   std::string out = header_text(mesh, data, encoding);
   ValueWriter write(out, encoding);

@@ -82,8 +82,8 @@ std::vector<PsbClass> read_psb_classes(const std::filesystem::path& path) {
     PsbClass psb{header[0], header[1], {}};
     const long count = reader.count(header, 2, "number of models");
     for (long m = 0; m < count; ++m) {
-      const auto model = reader.next("model " + std::to_string(m + 1) + " of " + std::to_string(count) +
-                                     " of class " + psb.name);
+      const auto model =
+          reader.next("model " + std::to_string(m + 1) + " of " + std::to_string(count) + " of class " + psb.name);
       if (model.size() != 1)
         reader.fail("expected one model id (class " + psb.name + " lists " + std::to_string(count) + ")");
       const auto [at, inserted] = seen.emplace(model[0], psb.name);

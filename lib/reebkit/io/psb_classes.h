@@ -17,7 +17,7 @@ namespace reebkit {
 
 struct PsbClass {
   std::string name;
-  std::string parent;  ///< "0" for a top-level class
+  std::string parent;               ///< "0" for a top-level class
   std::vector<std::string> models;  ///< model ids, in file order
 };
 

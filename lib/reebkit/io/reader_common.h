@@ -24,7 +24,9 @@ inline std::size_t reservable(std::int64_t declared, std::size_t bytes_left, std
   return std::min(static_cast<std::size_t>(std::max<std::int64_t>(declared, 0)), bytes_left / least_bytes + 1);
 }
 
-inline bool all_finite(double x, double y, double z) { return std::isfinite(x) && std::isfinite(y) && std::isfinite(z); }
+inline bool all_finite(double x, double y, double z) {
+  return std::isfinite(x) && std::isfinite(y) && std::isfinite(z);
+}
 
 /// Rows of x y z as a #V x 3 array.
 inline Points points_from(const std::vector<double>& xyz) {

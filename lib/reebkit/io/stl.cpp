@@ -30,7 +30,8 @@ class Welder {
     x += 0.0;
     y += 0.0;
     z += 0.0;
-    const auto [it, inserted] = index_.try_emplace(Key{bits(x), bits(y), bits(z)}, static_cast<Index>(positions_.size() / 3));
+    const auto [it, inserted] =
+        index_.try_emplace(Key{bits(x), bits(y), bits(z)}, static_cast<Index>(positions_.size() / 3));
     if (inserted) positions_.insert(positions_.end(), {x, y, z});
     return it->second;
   }

@@ -2,8 +2,8 @@
 
 #include <cerrno>
 #include <charconv>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <utility>
 
@@ -57,9 +57,7 @@ TextScanner::TextScanner(std::string_view text, std::string source, Options opti
 void TextScanner::skip_blanks() {
   while (pos_ < end_) {
     switch (classes_[static_cast<unsigned char>(*pos_)]) {
-      case kBlank:
-        ++pos_;
-        break;
+      case kBlank: ++pos_; break;
       case kComment: {
         const void* newline = std::memchr(pos_, '\n', static_cast<std::size_t>(end_ - pos_));
         pos_ = newline ? static_cast<const char*>(newline) : end_;
@@ -73,8 +71,7 @@ void TextScanner::skip_blanks() {
         ++line_;
         break;
       }
-      default:
-        return;
+      default: return;
     }
   }
 }

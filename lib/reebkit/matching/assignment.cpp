@@ -15,8 +15,7 @@ double AssignmentSolver::solve(const double* cost, int rows, int cols, std::vect
   return solve_rows<false>(cost, rows, cols, assignment);
 }
 
-double AssignmentSolver::solve_or_leave(const double* cost, int rows, int cols,
-                                        std::vector<std::int32_t>& assignment) {
+double AssignmentSolver::solve_or_leave(const double* cost, int rows, int cols, std::vector<std::int32_t>& assignment) {
   if (rows < 0 || cols < 0)
     throw InvalidArgument("solve_or_leave: needs rows, columns >= 0, got " + std::to_string(rows) + " x " +
                           std::to_string(cols));

@@ -27,12 +27,14 @@ struct NodeCost {
   std::array<double, F::kL1Block> l1{};  // zero on the padding
   double structure = 0.0;                // weight of each of degree, start type, end type
   explicit NodeCost(const MatchingOptions& o) {
-    for (const int k : {F::kSqrtArea, F::kFqMin, F::kFqMax, F::kExtent, F::kRadius}) l1[at(k)] = o.attribute_weight / 5.0;
+    for (const int k : {F::kSqrtArea, F::kFqMin, F::kFqMax, F::kExtent, F::kRadius})
+      l1[at(k)] = o.attribute_weight / 5.0;
     l1[F::kSqrtNeighbourArea] = o.structure_weight / 4.0;
     for (int k = 0; k < kRadiusProfileLevels; ++k) l1[at(F::kProfile + k)] = o.profile_weight / kRadiusProfileLevels;
     for (int k = 0; k < kShapeBins; ++k) l1[at(F::kShape + k)] = o.shape_weight / 2.0;
     for (int k = 0; k < kShapeBins; ++k) l1[at(F::kGeodesicShape + k)] = o.geodesic_shape_weight / 2.0;
-    for (int k = 0; k < kRegionSpectrumLength; ++k) l1[at(F::kSpectrum + k)] = o.spectrum_weight / kRegionSpectrumLength;
+    for (int k = 0; k < kRegionSpectrumLength; ++k)
+      l1[at(F::kSpectrum + k)] = o.spectrum_weight / kRegionSpectrumLength;
     structure = o.structure_weight / 4.0;
   }
   static std::size_t at(int k) { return static_cast<std::size_t>(k); }
@@ -229,7 +231,8 @@ MatchableGraph make_matchable_graph(const GraphRecord& entry) {
   g.neighbours.resize(static_cast<std::size_t>(g.neighbour_offset[n]));
   std::vector<std::int32_t> fill(g.neighbour_offset.begin(), g.neighbour_offset.end() - 1);
   for (std::int32_t e = 0; e < entry.num_edges(); ++e) {
-    const std::int32_t u = entry.edges[2 * static_cast<std::size_t>(e)], v = entry.edges[2 * static_cast<std::size_t>(e) + 1];
+    const std::int32_t u = entry.edges[2 * static_cast<std::size_t>(e)],
+                       v = entry.edges[2 * static_cast<std::size_t>(e) + 1];
     g.neighbours[static_cast<std::size_t>(fill[static_cast<std::size_t>(u)]++)] = v;
     g.neighbours[static_cast<std::size_t>(fill[static_cast<std::size_t>(v)]++)] = u;
   }
@@ -244,7 +247,9 @@ MatchableGraph make_matchable_graph(const GraphRecord& entry) {
     const double y = std::clamp(entry.signature[static_cast<std::size_t>(kSigGlobalSpectrum) + k], 1e-12, 1.0 - 1e-12);
     g.global_spectrum[k] = std::log(y / (1.0 - y));
   }
-  const auto attribute = [&](std::size_t i, NodeAttribute c) { return entry.node_attributes[i * kNodeAttributeCount + c]; };
+  const auto attribute = [&](std::size_t i, NodeAttribute c) {
+    return entry.node_attributes[i * kNodeAttributeCount + c];
+  };
   for (std::size_t i = 0; i < n; ++i) g.relative_area[i] = attribute(i, kNodeRelativeArea);
   g.features.resize(n * MatchableGraph::kFeatureCount);
   for (std::size_t i = 0; i < n; ++i) {
@@ -261,12 +266,14 @@ MatchableGraph make_matchable_graph(const GraphRecord& entry) {
     x[F::kDegree] = static_cast<double>(g.neighbour_offset[i + 1] - g.neighbour_offset[i]);
     x[F::kStartType] = attribute(i, kNodeStartType);
     x[F::kEndType] = attribute(i, kNodeEndType);
-    for (int k = 0; k < kRadiusProfileLevels; ++k) x[F::kProfile + k] = attribute(i, NodeAttribute(kNodeRadiusProfile + k));
+    for (int k = 0; k < kRadiusProfileLevels; ++k)
+      x[F::kProfile + k] = attribute(i, NodeAttribute(kNodeRadiusProfile + k));
     for (int k = 0; k < kShapeBins; ++k) {
       x[F::kShape + k] = attribute(i, NodeAttribute(kNodeShapeHistogram + k));
       x[F::kGeodesicShape + k] = attribute(i, NodeAttribute(kNodeGeodesicHistogram + k));
     }
-    for (int k = 0; k < kRegionSpectrumLength; ++k) x[F::kSpectrum + k] = attribute(i, NodeAttribute(kNodeSpectrum + k));
+    for (int k = 0; k < kRegionSpectrumLength; ++k)
+      x[F::kSpectrum + k] = attribute(i, NodeAttribute(kNodeSpectrum + k));
   }
   return g;
 }
@@ -288,7 +295,8 @@ GraphMatch match_graphs(const MatchableGraph& a, const MatchableGraph& b, const 
   } else {
     match.distance = match_rows(b, a, options, workspace);
     for (std::size_t j = 0; j < workspace.forward.size(); ++j)
-      if (workspace.forward[j] >= 0) match.correspondence[static_cast<std::size_t>(workspace.forward[j])] = static_cast<std::int32_t>(j);
+      if (workspace.forward[j] >= 0)
+        match.correspondence[static_cast<std::size_t>(workspace.forward[j])] = static_cast<std::int32_t>(j);
   }
   match.distance += global_shape_term(a, b, options);
   return match;
@@ -337,9 +345,9 @@ double match_lower_bound(const MatchableGraph& a, const MatchableGraph& b, const
     const double* x = &a.features[i * MatchableGraph::kFeatureCount];
     double row_best = del;
     for (std::size_t j = 0; j < um; ++j) {
-      const double p = pair_cost(wi, node_weight(b, j, o),
-                                 node_dissimilarity(x, &b.features[j * MatchableGraph::kFeatureCount], node_cost) +
-                                     least_edge_term);
+      const double p =
+          pair_cost(wi, node_weight(b, j, o),
+                    node_dissimilarity(x, &b.features[j * MatchableGraph::kFeatureCount], node_cost) + least_edge_term);
       row_best = std::min(row_best, p - insert[j]);
       column_best[j] = std::min(column_best[j], p - del);
     }

@@ -56,16 +56,16 @@ namespace reebkit {
 /// body-shape benchmark together, the demo's variants as guard, and reported
 /// on the TOSCA collections (results/matching_weights.md).
 struct MatchingOptions {
-  double attribute_weight = 4.0;   ///< weight of a(i, j)
-  double structure_weight = 1.0;   ///< weight of s(i, j)
-  double edge_weight = 0.25;       ///< weight of e(i, j)
-  double profile_weight = 16.0;    ///< weight of p(i, j)
-  double shape_weight = 0.0;       ///< weight of h(i, j): Euclidean, follows the pose
-  double geodesic_shape_weight = 0.0;  ///< weight of h_g(i, j)
-  double global_shape_weight = 0.0;  ///< weight of g(A, B): Euclidean, follows the pose
+  double attribute_weight = 4.0;        ///< weight of a(i, j)
+  double structure_weight = 1.0;        ///< weight of s(i, j)
+  double edge_weight = 0.25;            ///< weight of e(i, j)
+  double profile_weight = 16.0;         ///< weight of p(i, j)
+  double shape_weight = 0.0;            ///< weight of h(i, j): Euclidean, follows the pose
+  double geodesic_shape_weight = 0.0;   ///< weight of h_g(i, j)
+  double global_shape_weight = 0.0;     ///< weight of g(A, B): Euclidean, follows the pose
   double global_geodesic_weight = 0.8;  ///< weight of g_g(A, B)
   double spectrum_weight = 4.0;         ///< weight of r(i, j)
-  double global_spectrum_weight = 8.0;   ///< weight of g_s(A, B)
+  double global_spectrum_weight = 8.0;  ///< weight of g_s(A, B)
   /// How many of the kGlobalSpectrumLength eigenvalues g_s compares (the
   /// lowest), in [1, kGlobalSpectrumLength]: the first ones carry the
   /// proportions of a shape, the later ones more of its details and of its
@@ -94,18 +94,32 @@ struct MatchableGraph {
   /// Columns of `features`, all in [0, ~1]. The first kL1Block columns
   /// (zero-padded to a multiple of 4) enter the node cost as a weighted L1
   /// distance; degree and types follow.
-  enum Feature : int { kSqrtArea, kFqMin, kFqMax, kExtent, kRadius, kSqrtNeighbourArea,
-                       kProfile, kShape = kProfile + kRadiusProfileLevels, kGeodesicShape = kShape + kShapeBins,
-                       kSpectrum = kGeodesicShape + kShapeBins, kL1End = kSpectrum + kRegionSpectrumLength,
-                       kL1Block = (kL1End + 3) / 4 * 4, kDegree = kL1Block, kStartType, kEndType, kFeatureCount };
+  enum Feature : int {
+    kSqrtArea,
+    kFqMin,
+    kFqMax,
+    kExtent,
+    kRadius,
+    kSqrtNeighbourArea,
+    kProfile,
+    kShape = kProfile + kRadiusProfileLevels,
+    kGeodesicShape = kShape + kShapeBins,
+    kSpectrum = kGeodesicShape + kShapeBins,
+    kL1End = kSpectrum + kRegionSpectrumLength,
+    kL1Block = (kL1End + 3) / 4 * 4,
+    kDegree = kL1Block,
+    kStartType,
+    kEndType,
+    kFeatureCount
+  };
   std::int32_t num_nodes = 0;
-  std::vector<double> features;           ///< num_nodes x kFeatureCount, row-major
-  std::vector<double> relative_area;      ///< per node
+  std::vector<double> features;                ///< num_nodes x kFeatureCount, row-major
+  std::vector<double> relative_area;           ///< per node
   std::vector<std::int32_t> neighbour_offset;  ///< num_nodes + 1, into neighbours (CSR)
   std::vector<std::int32_t> neighbours;
-  std::vector<char> adjacent;             ///< num_nodes x num_nodes, 1 where an edge joins the nodes
-  std::vector<double> global_shape;       ///< kGlobalShapeBins: the D2 of the whole surface (signature)
-  std::vector<double> global_geodesic;    ///< kGlobalShapeBins: its geodesic histogram (signature)
+  std::vector<char> adjacent;           ///< num_nodes x num_nodes, 1 where an edge joins the nodes
+  std::vector<double> global_shape;     ///< kGlobalShapeBins: the D2 of the whole surface (signature)
+  std::vector<double> global_geodesic;  ///< kGlobalShapeBins: its geodesic histogram (signature)
   /// kGlobalSpectrumLength: ln(lambda_k x area / (4 pi k)) of its
   /// Laplace-Beltrami spectrum (from the signature's squashed values); the
   /// zeros of a spectrum that could not be computed give ln(1e-12), far from

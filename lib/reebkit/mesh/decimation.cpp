@@ -21,8 +21,9 @@ std::vector<unsigned> simplify(const std::vector<unsigned>& indices, const std::
                                std::size_t target_triangles) {
   std::vector<unsigned> out(indices.size());
   // target_error 1 = the whole extent of the mesh: the count alone stops the collapses.
-  const std::size_t n = meshopt_simplify(out.data(), indices.data(), indices.size(), positions.data(),
-                                         positions.size() / 3, 3 * sizeof(float), 3 * target_triangles, 1.0f, 0, nullptr);
+  const std::size_t n =
+      meshopt_simplify(out.data(), indices.data(), indices.size(), positions.data(), positions.size() / 3,
+                       3 * sizeof(float), 3 * target_triangles, 1.0f, 0, nullptr);
   out.resize(n);
   return out;
 }
@@ -40,7 +41,9 @@ std::vector<unsigned> without_fins(const std::vector<unsigned>& indices) {
   for (std::size_t t = 0; t < indices.size() / 3; ++t) ++count[key(t)];
   std::vector<unsigned> out;
   for (std::size_t t = 0; t < indices.size() / 3; ++t)
-    if (count[key(t)] == 1) out.insert(out.end(), indices.begin() + static_cast<std::ptrdiff_t>(3 * t), indices.begin() + static_cast<std::ptrdiff_t>(3 * t + 3));
+    if (count[key(t)] == 1)
+      out.insert(out.end(), indices.begin() + static_cast<std::ptrdiff_t>(3 * t),
+                 indices.begin() + static_cast<std::ptrdiff_t>(3 * t + 3));
   return out;
 }
 
@@ -64,12 +67,14 @@ MeshVariant decimate_mesh(const Mesh& mesh, const DecimationOptions& options) {
   const auto target = static_cast<std::size_t>(std::llround(options.vertex_ratio * static_cast<double>(nv)));
   std::vector<unsigned> indices(static_cast<std::size_t>(mesh.triangles.size()));
   for (Index t = 0; t < mesh.num_triangles(); ++t)
-    for (int k = 0; k < 3; ++k) indices[static_cast<std::size_t>(3 * t + k)] = static_cast<unsigned>(mesh.triangles(t, k));
+    for (int k = 0; k < 3; ++k)
+      indices[static_cast<std::size_t>(3 * t + k)] = static_cast<unsigned>(mesh.triangles(t, k));
   std::vector<unsigned> kept = indices;
   if (target < nv) {
     std::vector<float> positions(3 * nv);
     for (std::size_t v = 0; v < nv; ++v)
-      for (int d = 0; d < 3; ++d) positions[3 * v + static_cast<std::size_t>(d)] = static_cast<float>(mesh.vertices(static_cast<Index>(v), d));
+      for (int d = 0; d < 3; ++d)
+        positions[3 * v + static_cast<std::size_t>(d)] = static_cast<float>(mesh.vertices(static_cast<Index>(v), d));
     // Steered by triangles (Euler: #F/#V stays about constant), corrected
     // from the vertex count each try gives.
     double triangles = static_cast<double>(mesh.num_triangles()) * options.vertex_ratio;
@@ -98,9 +103,9 @@ MeshVariant decimate_mesh(const Mesh& mesh, const DecimationOptions& options) {
   if (target >= nv) return out;
   TriangleRepair repaired = repair_degenerate_triangles(out.mesh, options.min_triangle_area);
   if (repaired.remaining > 0)
-    throw InvalidMeshError(mesh.source, "decimation to " + std::to_string(options.vertex_ratio) + " of the vertices left " +
-                                            std::to_string(repaired.remaining) + " triangles of at most " +
-                                            std::to_string(options.min_triangle_area) +
+    throw InvalidMeshError(mesh.source, "decimation to " + std::to_string(options.vertex_ratio) +
+                                            " of the vertices left " + std::to_string(repaired.remaining) +
+                                            " triangles of at most " + std::to_string(options.min_triangle_area) +
                                             " x the mean area that no edge flip or collapse removes");
   for (Index& v : repaired.input_vertex) v = out.original_vertex[static_cast<std::size_t>(v)];
   out.original_vertex = std::move(repaired.input_vertex);

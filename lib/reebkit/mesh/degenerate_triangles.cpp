@@ -21,7 +21,8 @@ double degenerate_area(double total_area, Index triangles, double min_area_fract
 class EditableMesh {
  public:
   explicit EditableMesh(const Mesh& mesh)
-      : points_(mesh.vertices), star_(static_cast<std::size_t>(mesh.num_vertices())),
+      : points_(mesh.vertices),
+        star_(static_cast<std::size_t>(mesh.num_vertices())),
         vertex_alive_(static_cast<std::size_t>(mesh.num_vertices()), 1) {
     for (Index t = 0; t < mesh.num_triangles(); ++t) {
       triangles_.push_back({mesh.triangles(t, 0), mesh.triangles(t, 1), mesh.triangles(t, 2)});
@@ -123,13 +124,14 @@ class EditableMesh {
     // common triangles, so no edge doubles and the topology stays.
     const std::vector<Index> around_u = neighbours(u), around_v = neighbours(v);
     std::vector<Index> common, merged;
-    std::set_intersection(around_u.begin(), around_u.end(), around_v.begin(), around_v.end(), std::back_inserter(common));
+    std::set_intersection(around_u.begin(), around_u.end(), around_v.begin(), around_v.end(),
+                          std::back_inserter(common));
     if (common != opposite) return std::nullopt;
     for (const Index w : opposite)
       if (neighbours(w).size() < 4) return std::nullopt;  // would be left with 2 neighbours
     std::set_union(around_u.begin(), around_u.end(), around_v.begin(), around_v.end(), std::back_inserter(merged));
     if (merged.size() < 5) return std::nullopt;  // v would be left with fewer than 3 (merged holds u and v)
-    Vec3 around = Vec3::Zero();  // u's area-weighted normal
+    Vec3 around = Vec3::Zero();                  // u's area-weighted normal
     for (const Index t : star(u)) around += normal(corners(t)[0], corners(t)[1], corners(t)[2]);
     double smallest = std::numeric_limits<double>::infinity();
     for (const Index t : star(u)) {
@@ -159,7 +161,8 @@ class EditableMesh {
         for (const Index w : corners(t)) erase(w, t);
         continue;
       }
-      std::replace(triangles_[static_cast<std::size_t>(t)].begin(), triangles_[static_cast<std::size_t>(t)].end(), u, v);
+      std::replace(triangles_[static_cast<std::size_t>(t)].begin(), triangles_[static_cast<std::size_t>(t)].end(), u,
+                   v);
       star_[static_cast<std::size_t>(v)].push_back(t);
     }
     star_[static_cast<std::size_t>(u)].clear();
@@ -209,7 +212,8 @@ class EditableMesh {
     out.mesh.vertices.resize(static_cast<Index>(out.input_vertex.size()), 3);
     for (std::size_t i = 0; i < out.input_vertex.size(); ++i) {
       out.mesh.vertices.row(static_cast<Index>(i)) = points_.row(out.input_vertex[i]);
-      if (!input.source_vertex.empty()) out.mesh.source_vertex.push_back(input.source_vertex[static_cast<std::size_t>(out.input_vertex[i])]);
+      if (!input.source_vertex.empty())
+        out.mesh.source_vertex.push_back(input.source_vertex[static_cast<std::size_t>(out.input_vertex[i])]);
     }
     Index live = 0;
     for (Index t = 0; t < num_triangles(); ++t) live += alive(t);
@@ -217,7 +221,8 @@ class EditableMesh {
     Index row = 0;
     for (Index t = 0; t < num_triangles(); ++t) {
       if (!alive(t)) continue;
-      for (int k = 0; k < 3; ++k) out.mesh.triangles(row, k) = new_id[static_cast<std::size_t>(corners(t)[static_cast<std::size_t>(k)])];
+      for (int k = 0; k < 3; ++k)
+        out.mesh.triangles(row, k) = new_id[static_cast<std::size_t>(corners(t)[static_cast<std::size_t>(k)])];
       ++row;
     }
     return out;

@@ -125,7 +125,8 @@ Mesh fill_holes(const Mesh& mesh, const HoleFillingOptions& options) {
     filled.vertices.row(center) = mean / static_cast<double>(loop.size());
     // Boundary half-edge a -> b lies in a triangle running a -> b, so the
     // fan triangle runs b -> a to be oriented like it.
-    for (std::size_t i = 0; i < loop.size(); ++i) filled.triangles.row(t++) << loop[(i + 1) % loop.size()], loop[i], center;
+    for (std::size_t i = 0; i < loop.size(); ++i)
+      filled.triangles.row(t++) << loop[(i + 1) % loop.size()], loop[i], center;
   }
   return filled;
 }
@@ -152,4 +153,3 @@ Mesh original_surface(const Mesh& mesh) {
 }
 
 }  // namespace reebkit
-

@@ -20,8 +20,8 @@ LaplaceBeltrami laplace_beltrami(const Mesh& mesh, const LaplaceBeltramiOptions&
     const Index v[3] = {mesh.triangles(t, 0), mesh.triangles(t, 1), mesh.triangles(t, 2)};
     const Vec3 p[3] = {mesh.vertices.row(v[0]), mesh.vertices.row(v[1]), mesh.vertices.row(v[2])};
     const double twice_area = (p[1] - p[0]).cross(p[2] - p[0]).norm();
-    const double longest = std::max({(p[1] - p[0]).squaredNorm(), (p[2] - p[1]).squaredNorm(),
-                                      (p[0] - p[2]).squaredNorm()});
+    const double longest =
+        std::max({(p[1] - p[0]).squaredNorm(), (p[2] - p[1]).squaredNorm(), (p[0] - p[2]).squaredNorm()});
     if (!(twice_area > 1e-12 * longest)) continue;  // spans no surface; its cotangents are undefined
     for (const Index corner : v) covered[static_cast<std::size_t>(corner)] = true;
     for (int k = 0; k < 3; ++k) {
@@ -52,7 +52,8 @@ LaplaceBeltrami laplace_beltrami(const Mesh& mesh, const LaplaceBeltramiOptions&
       row[v] = static_cast<Index>(result.vertex.size());
       result.vertex.push_back(static_cast<Index>(v));
     }
-  if (result.vertex.empty()) throw InvalidMeshError(source, "no triangle of nonzero area: no Laplace-Beltrami operator");
+  if (result.vertex.empty())
+    throw InvalidMeshError(source, "no triangle of nonzero area: no Laplace-Beltrami operator");
   for (std::vector<Triplet>* entries : {&stiffness, &mass})
     for (Triplet& e : *entries)
       e = Triplet(row[static_cast<std::size_t>(e.row())], row[static_cast<std::size_t>(e.col())], e.value());

@@ -47,17 +47,16 @@ void check_soup(const PolygonSoup& soup) {
   for (Index v = 0; v < num_vertices; ++v) {
     if (soup.vertices.row(v).allFinite()) continue;
     std::ostringstream problem;
-    problem << "vertex " << v << " has a non-finite coordinate (" << soup.vertices(v, 0) << ", "
-            << soup.vertices(v, 1) << ", " << soup.vertices(v, 2) << ")";
+    problem << "vertex " << v << " has a non-finite coordinate (" << soup.vertices(v, 0) << ", " << soup.vertices(v, 1)
+            << ", " << soup.vertices(v, 2) << ")";
     throw InvalidMeshError(soup.source, problem.str());
   }
   for (Index p = 0; p < soup.num_polygons(); ++p) {
     for (Index i = soup.face_offset[p]; i < soup.face_offset[p + 1]; ++i) {
       const Index v = soup.face_vertex[i];
       if (v < 0 || v >= num_vertices)
-        throw InvalidMeshError(soup.source, "polygon " + std::to_string(p) + " refers to vertex " +
-                                                std::to_string(v) + ", but there are " +
-                                                count_of(num_vertices, "vertex", "vertices"));
+        throw InvalidMeshError(soup.source, "polygon " + std::to_string(p) + " refers to vertex " + std::to_string(v) +
+                                                ", but there are " + count_of(num_vertices, "vertex", "vertices"));
     }
   }
 }
@@ -68,9 +67,8 @@ Index merge_coincident(const Points& vertices, std::vector<Index>& representativ
   std::vector<Index> order(representative.size());
   std::iota(order.begin(), order.end(), Index{0});
   const auto position = [&](Index v) { return std::make_tuple(vertices(v, 0), vertices(v, 1), vertices(v, 2)); };
-  std::sort(order.begin(), order.end(), [&](Index a, Index b) {
-    return std::make_pair(position(a), a) < std::make_pair(position(b), b);
-  });
+  std::sort(order.begin(), order.end(),
+            [&](Index a, Index b) { return std::make_pair(position(a), a) < std::make_pair(position(b), b); });
   Index merged = 0;
   for (std::size_t i = 1; i < order.size(); ++i) {
     if (position(order[i]) != position(order[i - 1])) continue;
@@ -349,9 +347,9 @@ CleanedMesh clean_mesh(const PolygonSoup& soup, const CleanupOptions& options) {
     report.warnings.push_back(where + count_of(topology.non_manifold_edges, "non-manifold edge", "non-manifold edges") +
                               " (used by more than 2 triangles), kept as is");
   if (topology.non_manifold_vertices > 0)
-    report.warnings.push_back(
-        where + count_of(topology.non_manifold_vertices, "non-manifold vertex", "non-manifold vertices") +
-        " (incident triangles form more than one fan), kept as is");
+    report.warnings.push_back(where +
+                              count_of(topology.non_manifold_vertices, "non-manifold vertex", "non-manifold vertices") +
+                              " (incident triangles form more than one fan), kept as is");
 
   if (topology.components == 1) {
     result.components.push_back(std::move(mesh));
@@ -377,12 +375,13 @@ CleanedMesh clean_mesh(const PolygonSoup& soup, const CleanupOptions& options) {
     const double total_area = std::accumulate(area.begin(), area.end(), 0.0);
     const Index kept = order.front();
     report.components_dropped = labels.count - 1;
-    report.warnings.push_back(
-        where + "kept the largest of " + std::to_string(labels.count) + " connected components (" +
-        count_of(size[kept], "triangle", "triangles") + ", " + percent(area[kept], total_area) +
-        " of the area); dropped " + count_of(report.components_dropped, "component", "components") + " with " +
-        count_of(mesh.num_triangles() - size[kept], "triangle", "triangles") + " (" +
-        percent(total_area - area[kept], total_area) + " of the area); the reeb commands keep them with --all-components");
+    report.warnings.push_back(where + "kept the largest of " + std::to_string(labels.count) +
+                              " connected components (" + count_of(size[kept], "triangle", "triangles") + ", " +
+                              percent(area[kept], total_area) + " of the area); dropped " +
+                              count_of(report.components_dropped, "component", "components") + " with " +
+                              count_of(mesh.num_triangles() - size[kept], "triangle", "triangles") + " (" +
+                              percent(total_area - area[kept], total_area) +
+                              " of the area); the reeb commands keep them with --all-components");
     order.resize(1);
   }
   result.components = split_components(mesh, labels, order);

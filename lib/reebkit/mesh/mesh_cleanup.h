@@ -26,12 +26,12 @@ struct CleanupOptions {
 struct CleanupReport {
   Index input_vertices = 0;
   Index input_polygons = 0;
-  Index polygons_triangulated = 0;       ///< usable polygons with more than 3 vertices
-  Index triangles_created = 0;           ///< triangles made from those polygons (n - 2 each)
-  Index degenerate_faces_dropped = 0;    ///< polygons with < 3 distinct vertices or a repeated vertex
-  Index duplicate_faces_dropped = 0;     ///< triangles on the vertex set of an earlier one (either orientation)
+  Index polygons_triangulated = 0;          ///< usable polygons with more than 3 vertices
+  Index triangles_created = 0;              ///< triangles made from those polygons (n - 2 each)
+  Index degenerate_faces_dropped = 0;       ///< polygons with < 3 distinct vertices or a repeated vertex
+  Index duplicate_faces_dropped = 0;        ///< triangles on the vertex set of an earlier one (either orientation)
   Index unreferenced_vertices_dropped = 0;  ///< vertices no kept triangle uses (merged ones not counted)
-  Index coincident_vertices_merged = 0;  ///< vertices welded onto an earlier vertex at the same position
+  Index coincident_vertices_merged = 0;     ///< vertices welded onto an earlier vertex at the same position
   Index boundary_edges = 0;
   Index boundary_loops = 0;
   Index non_manifold_edges = 0;

@@ -118,7 +118,8 @@ MeshGraph build_mesh_graph(const Mesh& mesh) {
   {
     std::vector<Index> fill(tri_offset.begin(), tri_offset.end() - 1);
     for (Index f = 0; f < nf; ++f)
-      for (int k = 0; k < 3; ++k) tri_of[static_cast<std::size_t>(fill[static_cast<std::size_t>(mesh.triangles(f, k))]++)] = f;
+      for (int k = 0; k < 3; ++k)
+        tri_of[static_cast<std::size_t>(fill[static_cast<std::size_t>(mesh.triangles(f, k))]++)] = f;
   }
 
   MeshGraph g;

@@ -23,11 +23,11 @@ enum class RingKind : std::uint8_t {
 /// last neighbour links back to the first exactly for Closed rings. For a
 /// consistently oriented mesh the order is counter-clockwise.
 struct MeshGraph {
-  std::vector<Index> offset;             ///< #V + 1
-  std::vector<Index> neighbor;           ///< 2 #E half-edges
-  std::vector<double> length;            ///< |x_v - x_neighbor|, parallel to neighbor
-  std::vector<std::uint8_t> link_next;   ///< 1 if slot i and its successor share a triangle with v
-  std::vector<RingKind> ring;            ///< #V
+  std::vector<Index> offset;            ///< #V + 1
+  std::vector<Index> neighbor;          ///< 2 #E half-edges
+  std::vector<double> length;           ///< |x_v - x_neighbor|, parallel to neighbor
+  std::vector<std::uint8_t> link_next;  ///< 1 if slot i and its successor share a triangle with v
+  std::vector<RingKind> ring;           ///< #V
 
   Index num_vertices() const { return static_cast<Index>(offset.size()) - 1; }
   Index num_half_edges() const { return static_cast<Index>(neighbor.size()); }

@@ -40,14 +40,13 @@ class DisjointSets {
 
 /// Throws InvalidArgument unless every index lies in [0, num_vertices) and,
 /// when `distinct`, the three indices of each triangle differ.
-void check_triangles(const Triangles& triangles, Index num_vertices, bool distinct,
-                     const std::string& caller) {
+void check_triangles(const Triangles& triangles, Index num_vertices, bool distinct, const std::string& caller) {
   for (Index t = 0; t < triangles.rows(); ++t) {
     for (int k = 0; k < 3; ++k) {
       const Index v = triangles(t, k);
       if (v < 0 || v >= num_vertices)
-        throw InvalidArgument(caller + ": triangle " + std::to_string(t) + " has vertex index " +
-                              std::to_string(v) + " outside [0, " + std::to_string(num_vertices) + ")");
+        throw InvalidArgument(caller + ": triangle " + std::to_string(t) + " has vertex index " + std::to_string(v) +
+                              " outside [0, " + std::to_string(num_vertices) + ")");
     }
     if (distinct && (triangles(t, 0) == triangles(t, 1) || triangles(t, 1) == triangles(t, 2) ||
                      triangles(t, 0) == triangles(t, 2)))
@@ -196,8 +195,8 @@ MeshTopology analyze_topology(const Mesh& mesh) {
   std::vector<Index> fans_at_vertex(static_cast<std::size_t>(num_vertices), 0);
   for (Index c = 0; c < num_corners; ++c)
     if (fans.find(c) == c) ++fans_at_vertex[corner_vertex(triangles, c)];
-  topology.non_manifold_vertices = static_cast<Index>(
-      std::count_if(fans_at_vertex.begin(), fans_at_vertex.end(), [](Index n) { return n != 1; }));
+  topology.non_manifold_vertices =
+      static_cast<Index>(std::count_if(fans_at_vertex.begin(), fans_at_vertex.end(), [](Index n) { return n != 1; }));
 
   // Boundary loops: two boundary edges meeting at a vertex continue each
   // other when they bound the same fan there.

@@ -18,7 +18,8 @@ Index target_count(const Mesh& mesh, const RemeshOptions& options) {
   if (options.target_vertices > 0) return options.target_vertices;
   if (!(options.target_edge_length > 0.0 && std::isfinite(options.target_edge_length)))
     throw InvalidArgument(mesh.source + ": remeshing needs a vertex count or an edge length > 0");
-  const double n = 2.0 * surface_area(mesh) / (std::sqrt(3.0) * options.target_edge_length * options.target_edge_length);
+  const double n =
+      2.0 * surface_area(mesh) / (std::sqrt(3.0) * options.target_edge_length * options.target_edge_length);
   return n < 1e9 ? static_cast<Index>(std::llround(n)) : Index{1000000000};
 }
 
@@ -42,7 +43,8 @@ Points vertex_normals(const Mesh& mesh) {
 
 MeshVariant remesh(const Mesh& mesh, const RemeshOptions& options) {
   const Index target = target_count(mesh, options);
-  if (target < 4) throw InvalidArgument(mesh.source + ": remeshing target of " + std::to_string(target) + " vertices is below 4");
+  if (target < 4)
+    throw InvalidArgument(mesh.source + ": remeshing target of " + std::to_string(target) + " vertices is below 4");
   if (options.smoothing_iterations < 0 || !(options.smoothing_step >= 0.0 && options.smoothing_step <= 1.0))
     throw InvalidArgument(mesh.source + ": negative smoothing iterations or a smoothing step outside [0, 1]");
   if (!(options.min_triangle_area >= 0.0 && options.min_triangle_area < 1.0))
@@ -57,7 +59,8 @@ MeshVariant remesh(const Mesh& mesh, const RemeshOptions& options) {
   MeshVariant out;
   try {
     out.mesh = decimate_mesh(dense, DecimationOptions{static_cast<double>(target) / dense.num_vertices(), 0.02,
-                                                      options.min_triangle_area}).mesh;
+                                                      options.min_triangle_area})
+                   .mesh;
   } catch (const InvalidMeshError& e) {
     throw InvalidMeshError(mesh.source, with_seed + e.what());
   }
@@ -69,9 +72,11 @@ MeshVariant remesh(const Mesh& mesh, const RemeshOptions& options) {
   for (int iteration = 0; iteration < options.smoothing_iterations; ++iteration) {
     const Points normals = vertex_normals(result);
     for (Index v = 0; v < result.num_vertices(); ++v) {
-      if (graph.ring[static_cast<std::size_t>(v)] != RingKind::Closed || graph.degree(v) == 0) continue;  // borders stay
+      if (graph.ring[static_cast<std::size_t>(v)] != RingKind::Closed || graph.degree(v) == 0)
+        continue;  // borders stay
       Vec3 centroid = Vec3::Zero();
-      for (Index i = graph.offset[v]; i < graph.offset[v + 1]; ++i) centroid += result.vertices.row(graph.neighbor[static_cast<std::size_t>(i)]).transpose();
+      for (Index i = graph.offset[v]; i < graph.offset[v + 1]; ++i)
+        centroid += result.vertices.row(graph.neighbor[static_cast<std::size_t>(i)]).transpose();
       centroid /= graph.degree(v);
       const Vec3 p = result.vertices.row(v), n = normals.row(v);
       const Vec3 step = options.smoothing_step * (centroid - p - n.dot(centroid - p) * n);

@@ -24,7 +24,7 @@ struct RemeshOptions {
   /// also pulls the vertices near a thin tip down the tip.
   int smoothing_iterations = 1;
   double smoothing_step = 0.5;  ///< in [0, 1]
-  std::uint64_t seed = 1;  ///< the jitter of the dense sampling; same seed, same mesh
+  std::uint64_t seed = 1;       ///< the jitter of the dense sampling; same seed, same mesh
   /// No triangle of the result has an area at or below this fraction of its
   /// mean triangle area (degenerate_triangles.h), so no vertex has a star
   /// without area: decimation, smoothing and projection can leave slivers

@@ -72,7 +72,8 @@ Mesh add_normal_noise(const Mesh& mesh, const NoiseOptions& options) {
   std::normal_distribution<double> gaussian;  // x amplitude x diagonal
   Mesh out = mesh;
   for (Index v = 0; v < mesh.num_vertices(); ++v) {
-    const double shift = options.shape == NoiseShape::Uniform ? uniform(rng) : options.amplitude * diagonal * gaussian(rng);
+    const double shift =
+        options.shape == NoiseShape::Uniform ? uniform(rng) : options.amplitude * diagonal * gaussian(rng);
     const double length = normals.row(v).norm();
     if (length > 0.0) out.vertices.row(v) += shift / length * normals.row(v);
   }

@@ -87,8 +87,9 @@ ShapeDna shape_dna(const Mesh& mesh, const ShapeDnaOptions& options) {
   const Eigen::Index subspace = std::min<Eigen::Index>(n, std::max<Eigen::Index>(2 * computed + 1, 20));
   ShiftedSolve op(operators.stiffness, operators.mass, source);
   MassProduct mass_op(operators.mass);
-  Spectra::SymGEigsShiftSolver<ShiftedSolve, MassProduct, Spectra::GEigsMode::ShiftInvert>
-      solver(op, mass_op, computed, subspace, options.shift);
+  Spectra::SymGEigsShiftSolver<ShiftedSolve, MassProduct, Spectra::GEigsMode::ShiftInvert> solver(op, mass_op, computed,
+                                                                                                  subspace,
+                                                                                                  options.shift);
   solver.init();
   solver.compute(Spectra::SortRule::LargestMagn, 1000, options.tolerance, Spectra::SortRule::SmallestAlge);
   if (solver.info() != Spectra::CompInfo::Successful)

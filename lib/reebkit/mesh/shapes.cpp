@@ -111,8 +111,8 @@ Mesh make_holed_plate(int genus, int resolution) {
 Mesh make_icosphere(int levels, double radius) {
   if (levels < 0) throw InvalidArgument("make_icosphere: levels must be >= 0");
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-  std::vector<Vec3> points = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                              {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  std::vector<Vec3> points = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
+                              {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
   for (auto& p : points) p.normalize();
   std::vector<std::array<Index, 3>> tris = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
                                             {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
@@ -121,9 +121,11 @@ Mesh make_icosphere(int levels, double radius) {
   for (int level = 0; level < levels; ++level) {
     std::unordered_map<std::uint64_t, Index> midpoint;
     const auto mid = [&](Index a, Index b) {
-      const std::uint64_t key = (static_cast<std::uint64_t>(std::min(a, b)) << 32) | static_cast<std::uint32_t>(std::max(a, b));
+      const std::uint64_t key =
+          (static_cast<std::uint64_t>(std::min(a, b)) << 32) | static_cast<std::uint32_t>(std::max(a, b));
       const auto [it, inserted] = midpoint.try_emplace(key, static_cast<Index>(points.size()));
-      if (inserted) points.push_back((points[static_cast<std::size_t>(a)] + points[static_cast<std::size_t>(b)]).normalized());
+      if (inserted)
+        points.push_back((points[static_cast<std::size_t>(a)] + points[static_cast<std::size_t>(b)]).normalized());
       return it->second;
     };
     std::vector<std::array<Index, 3>> finer;

@@ -35,10 +35,10 @@ Mesh make_holed_plate(int genus, int resolution = 4);
 
 /// Options of make_star.
 struct StarOptions {
-  int arms = 5;               ///< number of protrusions (>= 1)
-  int levels = 5;             ///< icosphere subdivision levels of the base sphere
-  double arm_length = 2.0;    ///< how far a tip stands out, in base-sphere radii
-  double arm_width = 0.20;    ///< angular half-width of an arm at its base, radians
+  int arms = 5;             ///< number of protrusions (>= 1)
+  int levels = 5;           ///< icosphere subdivision levels of the base sphere
+  double arm_length = 2.0;  ///< how far a tip stands out, in base-sphere radii
+  double arm_width = 0.20;  ///< angular half-width of an arm at its base, radians
   /// Rotates the arm directions (a Fibonacci spiral) so that shapes with the
   /// same arm count can differ in layout; 0 keeps the default layout.
   double twist = 0.0;

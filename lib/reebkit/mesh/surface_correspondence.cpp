@@ -55,7 +55,8 @@ SurfaceLocator::SurfaceLocator(const Mesh& mesh) : mesh_(mesh) {
   };
   const auto num_cells = static_cast<std::size_t>(cells_[0]) * cells_[1] * cells_[2];
   cell_start_.assign(num_cells + 1, 0);
-  for (Index t = 0; t < mesh.num_triangles(); ++t) for_cells(t, [&](Index c) { ++cell_start_[static_cast<std::size_t>(c) + 1]; });
+  for (Index t = 0; t < mesh.num_triangles(); ++t)
+    for_cells(t, [&](Index c) { ++cell_start_[static_cast<std::size_t>(c) + 1]; });
   for (std::size_t c = 0; c < num_cells; ++c) cell_start_[c + 1] += cell_start_[c];
   cell_triangle_.resize(static_cast<std::size_t>(cell_start_.back()));
   std::vector<Index> fill(cell_start_.begin(), cell_start_.end() - 1);
@@ -136,7 +137,8 @@ std::vector<Index> nearest_original_vertices(const SurfaceLocator& original, con
 double sampled_distance_to_surface(const Mesh& from, const SurfaceLocator& to, int samples, std::uint64_t seed) {
   const TriangleAreas areas = triangle_areas(from);
   double worst = 0.0;
-  for (const Vec3& p : sample_surface(from, areas.view(), samples, seed)) worst = std::max(worst, to.closest(p).distance);
+  for (const Vec3& p : sample_surface(from, areas.view(), samples, seed))
+    worst = std::max(worst, to.closest(p).distance);
   return worst;
 }
 

@@ -56,7 +56,7 @@ class SurfaceLocator {
   Vec3 origin_ = Vec3::Zero();
   double cell_ = 1.0;
   Eigen::Vector3i cells_ = Eigen::Vector3i::Ones();
-  std::vector<Index> cell_start_;     ///< CSR: cell c holds cell_triangle_[cell_start_[c] .. cell_start_[c+1])
+  std::vector<Index> cell_start_;  ///< CSR: cell c holds cell_triangle_[cell_start_[c] .. cell_start_[c+1])
   std::vector<Index> cell_triangle_;
 
   Eigen::Vector3i cell_of(const Vec3& p) const;

@@ -93,12 +93,14 @@ CanonicalCopy canonical_copy(const Mesh& mesh) {
   for (Index v = 0; v < n; ++v) {
     const Vec3 p = place(v);
     std::array<double, 3>& snapped = position[static_cast<std::size_t>(v)];
-    for (int d = 0; d < 3; ++d) snapped[static_cast<std::size_t>(d)] = std::ldexp(std::nearbyint(std::ldexp(p(d), 20)), -20);
+    for (int d = 0; d < 3; ++d)
+      snapped[static_cast<std::size_t>(d)] = std::ldexp(std::nearbyint(std::ldexp(p(d), 20)), -20);
   }
   out.original_vertex.resize(static_cast<std::size_t>(n));
   std::iota(out.original_vertex.begin(), out.original_vertex.end(), Index{0});
-  std::stable_sort(out.original_vertex.begin(), out.original_vertex.end(),
-                   [&](Index a, Index b) { return position[static_cast<std::size_t>(a)] < position[static_cast<std::size_t>(b)]; });
+  std::stable_sort(out.original_vertex.begin(), out.original_vertex.end(), [&](Index a, Index b) {
+    return position[static_cast<std::size_t>(a)] < position[static_cast<std::size_t>(b)];
+  });
   std::vector<Index> new_id(static_cast<std::size_t>(n));
   out.mesh.source = mesh.source;
   out.mesh.vertices.resize(n, 3);
@@ -107,7 +109,8 @@ CanonicalCopy canonical_copy(const Mesh& mesh) {
     const Index from = out.original_vertex[static_cast<std::size_t>(v)];
     new_id[static_cast<std::size_t>(from)] = v;
     if (!mesh.source_vertex.empty()) out.mesh.source_vertex[static_cast<std::size_t>(v)] = mesh.source_index(from);
-    for (int d = 0; d < 3; ++d) out.mesh.vertices(v, d) = position[static_cast<std::size_t>(from)][static_cast<std::size_t>(d)];
+    for (int d = 0; d < 3; ++d)
+      out.mesh.vertices(v, d) = position[static_cast<std::size_t>(from)][static_cast<std::size_t>(d)];
   }
   std::vector<std::array<Index, 3>> triangles(static_cast<std::size_t>(mesh.num_triangles()));
   for (Index t = 0; t < mesh.num_triangles(); ++t) {
@@ -118,7 +121,8 @@ CanonicalCopy canonical_copy(const Mesh& mesh) {
   std::sort(triangles.begin(), triangles.end());
   out.mesh.triangles.resize(mesh.num_triangles(), 3);
   for (Index t = 0; t < mesh.num_triangles(); ++t)
-    for (int c = 0; c < 3; ++c) out.mesh.triangles(t, c) = triangles[static_cast<std::size_t>(t)][static_cast<std::size_t>(c)];
+    for (int c = 0; c < 3; ++c)
+      out.mesh.triangles(t, c) = triangles[static_cast<std::size_t>(t)][static_cast<std::size_t>(c)];
   return out;
 }
 

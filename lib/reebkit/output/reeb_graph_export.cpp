@@ -80,8 +80,7 @@ void write_reeb_graph_json(std::ostream& out, const std::string& mesh, const std
           .field("area", geometry[kGeomArea])
           .field("fq_min", geometry[kGeomFqMin])
           .field("fq_max", geometry[kGeomFqMax]);
-      json.key("barycenter")
-          .numbers(std::vector<double>(geometry + kGeomBarycenterX, geometry + kGeomBarycenterZ + 1));
+      json.key("barycenter").numbers(std::vector<double>(geometry + kGeomBarycenterX, geometry + kGeomBarycenterZ + 1));
       json.key("attributes").begin_object();
       for (std::size_t a = 0; a < kNodeAttributeNames.size(); ++a)
         json.field(kNodeAttributeNames[a], e.node_attributes[n * kNodeAttributeCount + a]);

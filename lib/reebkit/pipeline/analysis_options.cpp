@@ -28,6 +28,8 @@ AnalysisOptionField field(const char* name, const char* help, Access access, Opt
 }  // namespace
 
 const std::vector<AnalysisOptionField>& analysis_option_fields() {
+  // A table, one option per row.
+  // clang-format off
   static const std::vector<AnalysisOptionField> fields = {
       field("max_hole_loop", "close each boundary loop no longer than this fraction of sqrt(surface area) before "
             "the analysis (0: keep every hole)",
@@ -52,6 +54,7 @@ const std::vector<AnalysisOptionField>& analysis_option_fields() {
       field("skeleton_levels", "levels of f the skeleton is thinned to (a point per level a line absorbs)",
             [](auto& o) -> auto& { return o.reeb.skeleton_levels; }, OptionRange{1}),
   };
+  // clang-format on
   return fields;
 }
 
@@ -64,8 +67,8 @@ std::vector<NamedOption> named_analysis_options(const AnalysisOptions& options) 
 AnalysisOptions analysis_options_from(const std::vector<NamedOption>& named) {
   AnalysisOptions options;
   // Files written before level_lines existed were analysed with Definition 6.
-  if (!named.empty() && std::none_of(named.begin(), named.end(),
-                                     [](const NamedOption& option) { return option.name == "level_lines"; }))
+  if (!named.empty() &&
+      std::none_of(named.begin(), named.end(), [](const NamedOption& option) { return option.name == "level_lines"; }))
     options.reeb.level_lines = LevelLines::Paper;
   for (const NamedOption& option : named) {
     const AnalysisOptionField* f = find_option(analysis_option_fields(), option.name);

@@ -14,8 +14,8 @@ MeshAnalysis analyze_mesh(Mesh mesh, const AnalysisOptions& options) {
   a.graph = build_mesh_graph(a.mesh);
   // Only a mesh with a boundary (a ring that is not a closed cycle) can have
   // holes to fill; the graph already says whether there is one.
-  const bool closed = std::all_of(a.graph.ring.begin(), a.graph.ring.end(),
-                                  [](RingKind r) { return r == RingKind::Closed; });
+  const bool closed =
+      std::all_of(a.graph.ring.begin(), a.graph.ring.end(), [](RingKind r) { return r == RingKind::Closed; });
   if (!closed && options.holes.max_loop_length > 0) {
     a.mesh = fill_holes(a.mesh, options.holes);
     a.graph = build_mesh_graph(a.mesh);
@@ -36,8 +36,7 @@ MeshAnalysis analyze_mesh(Mesh mesh, const AnalysisOptions& options) {
 }
 
 GraphAttributes compute_attributes(const MeshAnalysis& analysis) {
-  return compute_attributes(analysis.mesh, analysis.graph, analysis.fq.value, analysis.features,
-                            analysis.reeb);
+  return compute_attributes(analysis.mesh, analysis.graph, analysis.fq.value, analysis.features, analysis.reeb);
 }
 
 }  // namespace reebkit

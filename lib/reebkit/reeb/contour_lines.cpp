@@ -14,7 +14,8 @@ VertexTriangles vertex_triangles(const Mesh& mesh) {
   out.triangle.resize(static_cast<std::size_t>(out.offset.back()));
   std::vector<Index> fill(out.offset.begin(), out.offset.end() - 1);
   for (Index t = 0; t < mesh.num_triangles(); ++t)
-    for (int k = 0; k < 3; ++k) out.triangle[static_cast<std::size_t>(fill[static_cast<std::size_t>(mesh.triangles(t, k))]++)] = t;
+    for (int k = 0; k < 3; ++k)
+      out.triangle[static_cast<std::size_t>(fill[static_cast<std::size_t>(mesh.triangles(t, k))]++)] = t;
   return out;
 }
 
@@ -83,11 +84,13 @@ const std::vector<Index>& FrontStar::arc_triangles(const Mesh& mesh, const std::
       const Index w = mesh.triangles(entries_[i].triangle, k);
       if (w == v_ || state[static_cast<std::size_t>(w)] == VertexState::Visited) continue;
       for (std::size_t j = i + 1; j < n; ++j)
-        if (entries_[j].after && unvisited_corner(j, w)) arc_parent_[static_cast<std::size_t>(find(static_cast<Index>(j)))] = find(static_cast<Index>(i));
+        if (entries_[j].after && unvisited_corner(j, w))
+          arc_parent_[static_cast<std::size_t>(find(static_cast<Index>(j)))] = find(static_cast<Index>(i));
     }
   }
   for (std::size_t i = 0; i < n; ++i)
-    if (entries_[i].after && find(static_cast<Index>(i)) == static_cast<Index>(i)) arcs_.push_back(entries_[i].triangle);
+    if (entries_[i].after && find(static_cast<Index>(i)) == static_cast<Index>(i))
+      arcs_.push_back(entries_[i].triangle);
   return arcs_;
 }
 

@@ -47,7 +47,8 @@ void for_each_front_neighbour(const Mesh& mesh, const VertexTriangles& around, c
     const Index p = mesh.triangles(t, k);
     const Index q = mesh.triangles(t, (k + 1) % 3);
     if (visited(p) == visited(q)) continue;
-    for (Index i = around.offset[static_cast<std::size_t>(p)]; i < around.offset[static_cast<std::size_t>(p) + 1]; ++i) {
+    for (Index i = around.offset[static_cast<std::size_t>(p)]; i < around.offset[static_cast<std::size_t>(p) + 1];
+         ++i) {
       const Index u = around.triangle[static_cast<std::size_t>(i)];
       if (u != t && (mesh.triangles(u, 0) == q || mesh.triangles(u, 1) == q || mesh.triangles(u, 2) == q)) visit(u);
     }
@@ -120,7 +121,8 @@ class FrontStar {
     // A new line no old line feeds (a fan of v that was off the front) is fed
     // by the first old line.
     for (Index n = 0; n < change.new_lines; ++n)
-      if (std::none_of(change.links.begin(), change.links.end(), [n](const std::array<Index, 2>& l) { return l[1] == n; }))
+      if (std::none_of(change.links.begin(), change.links.end(),
+                       [n](const std::array<Index, 2>& l) { return l[1] == n; }))
         add_link(change, 0, n);
     // Visiting v changes the Euler characteristic of the visited region by
     // 1 - (edges) + (triangles) of the star part it adds, the number of

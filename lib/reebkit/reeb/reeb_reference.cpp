@@ -15,9 +15,9 @@ namespace {
 /// The discrete level lines of Definition 6: the connected components of
 /// C(t), found by breadth-first search over the candidate vertices.
 struct CandidateLines {
-  std::vector<Index> line;    ///< #V, line of each candidate vertex (kInvalidIndex elsewhere)
-  std::vector<Index> size;    ///< vertices per line
-  std::vector<Vec3> center;   ///< barycenter of each line's vertices (section 5.2)
+  std::vector<Index> line;   ///< #V, line of each candidate vertex (kInvalidIndex elsewhere)
+  std::vector<Index> size;   ///< vertices per line
+  std::vector<Vec3> center;  ///< barycenter of each line's vertices (section 5.2)
 };
 
 void find_level_lines(const Mesh& mesh, const MeshGraph& graph, const std::vector<VertexState>& state,
@@ -52,7 +52,8 @@ void find_level_lines(const Mesh& mesh, const MeshGraph& graph, const std::vecto
 /// The level lines of LevelLines::Contour from scratch: the connected sets
 /// of front triangles (union-find), each named by its smallest triangle;
 /// kInvalidIndex for a triangle off the front.
-std::vector<Index> front_curves(const Mesh& mesh, const VertexTriangles& around, const std::vector<VertexState>& state) {
+std::vector<Index> front_curves(const Mesh& mesh, const VertexTriangles& around,
+                                const std::vector<VertexState>& state) {
   std::vector<Index> parent(static_cast<std::size_t>(mesh.num_triangles()));
   std::iota(parent.begin(), parent.end(), Index{0});
   const auto find = [&parent](Index x) {

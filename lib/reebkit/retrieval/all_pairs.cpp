@@ -20,8 +20,7 @@ std::int64_t pairs_before(std::int64_t row, std::int64_t n) { return row * (n - 
 
 std::vector<std::int64_t> balanced_row_blocks(std::int64_t n, int parts) {
   if (n < 0 || parts < 1)
-    throw InvalidArgument("balanced row blocks: " + std::to_string(n) + " rows in " + std::to_string(parts) +
-                          " parts");
+    throw InvalidArgument("balanced row blocks: " + std::to_string(n) + " rows in " + std::to_string(parts) + " parts");
   const std::int64_t total = pairs_before(n, n);
   std::vector<std::int64_t> first = {0};
   std::int64_t row = 0;
@@ -29,7 +28,8 @@ std::vector<std::int64_t> balanced_row_blocks(std::int64_t n, int parts) {
     // The boundary whose pair count before it is nearest to b / parts of them all.
     const double target = static_cast<double>(total) * b / parts;
     while (row < n && static_cast<double>(pairs_before(row + 1, n)) <= target) ++row;
-    if (row < n && static_cast<double>(pairs_before(row + 1, n)) - target < target - static_cast<double>(pairs_before(row, n)))
+    if (row < n &&
+        static_cast<double>(pairs_before(row + 1, n)) - target < target - static_cast<double>(pairs_before(row, n)))
       ++row;
     first.push_back(row);
   }
@@ -37,8 +37,8 @@ std::vector<std::int64_t> balanced_row_blocks(std::int64_t n, int parts) {
   return first;
 }
 
-std::vector<double> upper_triangle_rows(const std::vector<GraphRecord>& entries, std::int64_t first,
-                                        std::int64_t last, const AllPairsOptions& options) {
+std::vector<double> upper_triangle_rows(const std::vector<GraphRecord>& entries, std::int64_t first, std::int64_t last,
+                                        const AllPairsOptions& options) {
   if (options.threads < 0)
     throw InvalidArgument("all-pairs distances: threads " + std::to_string(options.threads) + " < 0");
   check_matching_options(options.matching);
@@ -55,11 +55,11 @@ std::vector<double> upper_triangle_rows(const std::vector<GraphRecord>& entries,
     const bool a_ok = entries[static_cast<std::size_t>(i)].ok;
     const std::int64_t row = pairs_before(i, n) - pairs_before(first, n);  // where row i starts in `out`
     for (std::int64_t j = i + 1; j < n; ++j)
-      out[static_cast<std::size_t>(row + j - i - 1)] = a_ok && entries[static_cast<std::size_t>(j)].ok
-                   ? match_graphs(graphs[static_cast<std::size_t>(i)], graphs[static_cast<std::size_t>(j)],
-                                  options.matching)
-                         .distance
-                   : kFailedEntryDistance;
+      out[static_cast<std::size_t>(row + j - i - 1)] =
+          a_ok && entries[static_cast<std::size_t>(j)].ok
+              ? match_graphs(graphs[static_cast<std::size_t>(i)], graphs[static_cast<std::size_t>(j)], options.matching)
+                    .distance
+              : kFailedEntryDistance;
   }
   return out;
 }
@@ -69,8 +69,8 @@ PairwiseDistances matrix_from_upper_triangle(std::vector<std::string> names, con
   out.names = std::move(names);
   const std::int64_t n = out.size();
   if (static_cast<std::int64_t>(upper.size()) != pairs_before(n, n))
-    throw InvalidArgument("all-pairs distances: " + std::to_string(upper.size()) + " values for the upper triangle of " +
-                          std::to_string(n) + " rows");
+    throw InvalidArgument("all-pairs distances: " + std::to_string(upper.size()) +
+                          " values for the upper triangle of " + std::to_string(n) + " rows");
   out.values.assign(static_cast<std::size_t>(n * n), 0.0);
   std::size_t k = 0;
   for (std::int64_t i = 0; i < n; ++i)
@@ -85,7 +85,8 @@ PairwiseDistances all_pairs_distances(const std::vector<GraphRecord>& entries, c
   std::vector<std::string> names;
   for (const GraphRecord& e : entries) names.push_back(e.name);
   return matrix_from_upper_triangle(std::move(names),
-                                    upper_triangle_rows(entries, 0, static_cast<std::int64_t>(entries.size()), options));
+                                    upper_triangle_rows(entries, 0, static_cast<std::int64_t>(entries.size()),
+                                                        options));
 }
 
 std::vector<std::int64_t> matrix_rows(const CollectionReader& collection, const std::vector<PsbClass>& classes) {

@@ -30,9 +30,7 @@ struct PairwiseDistances {
   std::vector<std::string> names;  ///< of the rows (and columns), in matrix order
   std::vector<double> values;      ///< names.size() x names.size(), row-major
   std::int64_t size() const { return static_cast<std::int64_t>(names.size()); }
-  double operator()(std::int64_t i, std::int64_t j) const {
-    return values[static_cast<std::size_t>(i * size() + j)];
-  }
+  double operator()(std::int64_t i, std::int64_t j) const { return values[static_cast<std::size_t>(i * size() + j)]; }
 };
 
 /// match_graphs(entries[i], entries[j]).distance for every pair, in the
@@ -56,8 +54,8 @@ std::vector<std::int64_t> balanced_row_blocks(std::int64_t n, int parts);
 /// computed apart (by the processes of an MPI job) assemble into the same
 /// matrix bit for bit (matrix_from_upper_triangle). Throws InvalidArgument
 /// on threads < 0 or rows out of range.
-std::vector<double> upper_triangle_rows(const std::vector<GraphRecord>& entries, std::int64_t first,
-                                        std::int64_t last, const AllPairsOptions& options = {});
+std::vector<double> upper_triangle_rows(const std::vector<GraphRecord>& entries, std::int64_t first, std::int64_t last,
+                                        const AllPairsOptions& options = {});
 
 /// The symmetric matrix, zero diagonal, of the whole upper triangle
 /// `upper` (rows [0, names.size()) as upper_triangle_rows orders them).
@@ -81,6 +79,6 @@ std::vector<GraphRecord> matrix_entries(const CollectionReader& collection, cons
 /// The entries `rows` of `collection` (read once) and their all-pairs
 /// distances, rows and columns in the order of `rows`.
 PairwiseDistances all_pairs_distances(const CollectionReader& collection, const std::vector<std::int64_t>& rows,
-                                   const AllPairsOptions& options = {});
+                                      const AllPairsOptions& options = {});
 
 }  // namespace reebkit

@@ -15,7 +15,8 @@ namespace reebkit {
 
 SearchableCollection load_searchable(const CollectionReader& collection) {
   SearchableCollection searchable{collection.entries(0, collection.size()),
-                                  SignatureIndex(collection.signatures(), kSignatureLength), {}};
+                                  SignatureIndex(collection.signatures(), kSignatureLength),
+                                  {}};
   searchable.graphs = make_matchable_graphs(searchable.entries);
   return searchable;
 }
@@ -81,10 +82,11 @@ std::vector<QueryResult> rank_candidates(const MatchableGraph& query_graph,
 #pragma omp critical(reebkit_query_best)
     threshold = kth;
     if (bound[c] > threshold) continue;
-    const double d = options.prune ? match_distance_up_to(query_graph, graph_of(order[static_cast<std::size_t>(r)]),
-                                                          threshold, options.matching)
-                                   : match_graphs(query_graph, graph_of(order[static_cast<std::size_t>(r)]),
-                                                  options.matching).distance;
+    const double d =
+        options.prune
+            ? match_distance_up_to(query_graph, graph_of(order[static_cast<std::size_t>(r)]), threshold,
+                                   options.matching)
+            : match_graphs(query_graph, graph_of(order[static_cast<std::size_t>(r)]), options.matching).distance;
     if (d > threshold) continue;  // exact or a lower bound: either way not in the ranking
 #pragma omp critical(reebkit_query_best)
     {

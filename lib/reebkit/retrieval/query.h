@@ -17,8 +17,8 @@
 namespace reebkit {
 
 struct QueryOptions {
-  int k = 10;             ///< results returned; >= 1
-  int candidates = 100;   ///< nearest signatures reranked by graph matching (at least k); >= 1
+  int k = 10;            ///< results returned; >= 1
+  int candidates = 100;  ///< nearest signatures reranked by graph matching (at least k); >= 1
   /// OpenMP threads bounding and matching the candidates; 0 =
   /// omp_get_max_threads(). One by default: a query is short, and on a busy
   /// machine its second thread waits for a core (docs/benchmarks.md, "Query
@@ -32,7 +32,7 @@ struct QueryOptions {
 };
 
 struct QueryResult {
-  std::int64_t index = 0;           ///< of the entry in the collection
+  std::int64_t index = 0;  ///< of the entry in the collection
   std::string name;
   std::string class_label;          ///< "" when the collection has none
   double distance = 0.0;            ///< match_graphs(query, entry).distance

@@ -37,8 +37,8 @@ SignatureIndex::SignatureIndex(const std::vector<double>& signatures, int dimens
   if (dimension < 1) throw InvalidArgument("signature index: dimension " + std::to_string(dimension) + " < 1");
   const std::size_t d = static_cast<std::size_t>(dimension);
   if (signatures.size() % d != 0)
-    throw InvalidArgument("signature index: " + std::to_string(signatures.size()) +
-                          " values are not rows of " + std::to_string(dimension));
+    throw InvalidArgument("signature index: " + std::to_string(signatures.size()) + " values are not rows of " +
+                          std::to_string(dimension));
   impl_->dimension = dimension;
   for (std::size_t r = 0; r < signatures.size() / d; ++r) {
     const auto begin = signatures.begin() + static_cast<std::ptrdiff_t>(r * d);

@@ -23,7 +23,7 @@ enum class SignatureIndexKind {
 
 struct SignatureIndexOptions {
   SignatureIndexKind kind = SignatureIndexKind::KdTreeSingle;  ///< both exact; the k-d tree is faster
-  int leaf_max_size = 10;  ///< points per k-d tree leaf (FLANN's default)
+  int leaf_max_size = 10;                                      ///< points per k-d tree leaf (FLANN's default)
 };
 
 struct SignatureNeighbour {

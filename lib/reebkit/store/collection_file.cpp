@@ -50,12 +50,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::array<const char*, kNodeColumnCount> kNodeColumnNames = {"type", "end", "birth_vertex",
-                                                                        "vertex_count"};
-constexpr std::array<const char*, kGeomColumnCount> kGeomColumnNames = {
-    "area", "fq_min", "fq_max", "barycenter_x", "barycenter_y", "barycenter_z"};
-constexpr std::array<const char*, kTimeColumnCount> kTimeColumnNames = {
-    "load_ms", "graph_ms", "features_ms", "quotient_ms", "reeb_ms", "attributes_ms"};
+constexpr std::array<const char*, kNodeColumnCount> kNodeColumnNames = {"type", "end", "birth_vertex", "vertex_count"};
+constexpr std::array<const char*, kGeomColumnCount> kGeomColumnNames = {"area",         "fq_min",       "fq_max",
+                                                                        "barycenter_x", "barycenter_y", "barycenter_z"};
+constexpr std::array<const char*, kTimeColumnCount> kTimeColumnNames = {"load_ms",     "graph_ms", "features_ms",
+                                                                        "quotient_ms", "reeb_ms",  "attributes_ms"};
 constexpr std::array<const char*, 2> kEdgeColumnNames = {"earlier_node", "later_node"};
 constexpr std::array<const char*, 3> kPointColumnNames = {"x", "y", "z"};
 
@@ -247,10 +246,10 @@ void write_text_attribute(H5::H5Object& object, const char* name, const std::vec
 /// (trailing NULs dropped); refuses a variable-length one, which would be
 /// read from the global heap.
 std::vector<std::string> read_text_attribute(const H5::Attribute& attribute) {
-  if (attribute.getTypeClass() != H5T_STRING) throw H5::AttributeIException("read", attribute.getName() + " is not a string");
+  if (attribute.getTypeClass() != H5T_STRING)
+    throw H5::AttributeIException("read", attribute.getName() + " is not a string");
   const H5::StrType type = attribute.getStrType();
-  if (type.isVariableStr())
-    throw H5::AttributeIException("read", attribute.getName() + " is a variable-length string");
+  if (type.isVariableStr()) throw H5::AttributeIException("read", attribute.getName() + " is a variable-length string");
   const std::size_t width = type.getSize();
   const auto n = static_cast<std::size_t>(attribute.getSpace().getSimpleExtentNpoints());
   std::string packed(width * n, '\0');
@@ -304,8 +303,8 @@ std::vector<NamedOption> read_option_attributes(const H5::H5File& file, const ch
   H5Pclose(plist);
   const H5_index_t order = (tracked & H5P_CRT_ORDER_INDEXED) != 0 ? H5_INDEX_CRT_ORDER : H5_INDEX_NAME;
   for (int i = 0; i < group.getNumAttrs(); ++i) {
-    const hid_t id = H5Aopen_by_idx(group.getId(), ".", order, H5_ITER_INC, static_cast<hsize_t>(i), H5P_DEFAULT,
-                                    H5P_DEFAULT);
+    const hid_t id =
+        H5Aopen_by_idx(group.getId(), ".", order, H5_ITER_INC, static_cast<hsize_t>(i), H5P_DEFAULT, H5P_DEFAULT);
     if (id < 0) throw H5::AttributeIException("read_option_attributes", "cannot open attribute " + std::to_string(i));
     const H5::Attribute attribute(id);
     H5Aclose(id);  // the Attribute holds its own reference
@@ -323,9 +322,7 @@ std::vector<NamedOption> read_option_attributes(const H5::H5File& file, const ch
         option.value = value;
         break;
       }
-      case H5T_STRING:
-        option.value = read_one_text(attribute);
-        break;
+      case H5T_STRING: option.value = read_one_text(attribute); break;
       default:
         throw H5::AttributeIException("read_option_attributes", std::string(name) + "/" + option.name +
                                                                     " is not an integer, a number or a string");
@@ -371,8 +368,8 @@ void read_classes(const H5::H5File& file, Provenance& provenance) {
       offset.back() != static_cast<std::int64_t>(models.size()) || !std::is_sorted(offset.begin(), offset.end()))
     throw H5::GroupIException("read_classes", "the classes group is inconsistent");
   for (std::size_t c = 0; c < names.size(); ++c)
-    provenance.classes.push_back({names[c], parents[c],
-                                  std::vector<std::string>(models.begin() + offset[c], models.begin() + offset[c + 1])});
+    provenance.classes.push_back(
+        {names[c], parents[c], std::vector<std::string>(models.begin() + offset[c], models.begin() + offset[c + 1])});
   provenance.classes_file = read_string_attribute(group, "file");
 }
 
@@ -842,7 +839,8 @@ std::vector<GraphRecord> CollectionReader::entries(std::int64_t first, std::int6
                           std::to_string(first + count - 1) + " out of range (the file holds " +
                           std::to_string(size()) + ")");
   if (count == 0) return {};
-  return guarded(impl_->path, "reading entries", [&] { return read_entries(impl_->tables, impl_->snapshot, first, count); });
+  return guarded(impl_->path, "reading entries",
+                 [&] { return read_entries(impl_->tables, impl_->snapshot, first, count); });
 }
 
 // ---------------------------------------------------------------------------
@@ -979,8 +977,7 @@ void CollectionWriter::Impl::create(const fs::path& target, const Provenance& pr
   // polling for it) holds it for as long as it reads the header, so the
   // switch is tried again for up to a second before it counts as a failure.
   for (int attempt = 0; H5Fstart_swmr_write(file.getId()) < 0; ++attempt) {
-    if (attempt == 50)
-      throw H5::FileIException("H5Fstart_swmr_write", "failed (another process keeps the file open?)");
+    if (attempt == 50) throw H5::FileIException("H5Fstart_swmr_write", "failed (another process keeps the file open?)");
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
 }
@@ -1040,9 +1037,7 @@ CollectionWriter::~CollectionWriter() {
   }
 }
 
-const std::vector<std::pair<std::string, std::uint64_t>>& CollectionWriter::existing() const {
-  return impl_->existing;
-}
+const std::vector<std::pair<std::string, std::uint64_t>>& CollectionWriter::existing() const { return impl_->existing; }
 
 std::int64_t CollectionWriter::size() const { return impl_->written + impl_->buffered; }
 

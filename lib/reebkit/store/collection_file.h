@@ -34,13 +34,13 @@ inline constexpr int kCollectionLayoutVersion = 7;
 /// Where the file came from: file attributes, and two groups.
 struct Provenance {
   std::string reebkit_version = REEBKIT_VERSION;
-  std::string options;   ///< the analysis options, as JSON text
+  std::string options;  ///< the analysis options, as JSON text
   /// The analysis options by name, each a typed attribute of the group
   /// `analysis_options` (the store does not interpret them: see
   /// pipeline/analysis_options.h).
   std::vector<NamedOption> analysis_options;
-  std::string command;   ///< the command line that made the file
-  std::string created;   ///< ISO 8601 date and time (UTC); filled by the writer when empty
+  std::string command;  ///< the command line that made the file
+  std::string created;  ///< ISO 8601 date and time (UTC); filled by the writer when empty
   /// The classes the meshes were labelled from, in the order of their .cla
   /// file (the group `classes`; empty: none), and that file.
   std::vector<PsbClass> classes;
