@@ -10,11 +10,15 @@ namespace reebkit {
 // argument-dependent lookup.
 static OptionValue option_value_of(Geodesic method) { return std::string(geodesic_name(method)); }
 static OptionValue option_value_of(LevelLines lines) { return std::string(level_lines_name(lines)); }
+static OptionValue option_value_of(Leaves leaves) { return std::string(leaves_name(leaves)); }
 static void set_from_option(const OptionValue& value, Geodesic& method) {
   method = parse_geodesic(std::get<std::string>(value));
 }
 static void set_from_option(const OptionValue& value, LevelLines& lines) {
   lines = parse_level_lines(std::get<std::string>(value));
+}
+static void set_from_option(const OptionValue& value, Leaves& leaves) {
+  leaves = parse_leaves(std::get<std::string>(value));
 }
 
 namespace {
@@ -51,6 +55,9 @@ const std::vector<AnalysisOptionField>& analysis_option_fields() {
       field("level_lines", "what a level line is: contour (the connected curves of the propagation front, exact "
             "topology) or paper (Definition 6: connected sets of candidate vertices)",
             [](auto& o) -> auto& { return o.reeb.level_lines; }),
+      field("leaves", "which terminations of the propagation end a leaf: maxima (those at a local maximum of f_q; "
+            "a pit the front closed around is cancelled with its split) or propagation (every one)",
+            [](auto& o) -> auto& { return o.reeb.leaves; }),
       field("skeleton_levels", "levels of f the skeleton is thinned to (a point per level a line absorbs)",
             [](auto& o) -> auto& { return o.reeb.skeleton_levels; }, OptionRange{1}),
   };
@@ -66,10 +73,14 @@ std::vector<NamedOption> named_analysis_options(const AnalysisOptions& options) 
 
 AnalysisOptions analysis_options_from(const std::vector<NamedOption>& named) {
   AnalysisOptions options;
-  // Files written before level_lines existed were analysed with Definition 6.
-  if (!named.empty() &&
-      std::none_of(named.begin(), named.end(), [](const NamedOption& option) { return option.name == "level_lines"; }))
-    options.reeb.level_lines = LevelLines::Paper;
+  // Files written before an option existed were analysed as it was then:
+  // level_lines with Definition 6, leaves with every termination.
+  const auto lacks = [&named](const char* name) {
+    return !named.empty() &&
+           std::none_of(named.begin(), named.end(), [name](const NamedOption& option) { return option.name == name; });
+  };
+  if (lacks("level_lines")) options.reeb.level_lines = LevelLines::Paper;
+  if (lacks("leaves")) options.reeb.leaves = Leaves::Propagation;
   for (const NamedOption& option : named) {
     const AnalysisOptionField* f = find_option(analysis_option_fields(), option.name);
     if (!f) throw InvalidArgument("unknown analysis option '" + option.name + "'");

@@ -6,6 +6,7 @@
 #include "reebkit/reeb/dual_graph_recorder.h"
 #include "reebkit/reeb/level_line_lists.h"
 #include "reebkit/reeb/line_split.h"
+#include "reebkit/reeb/pit_cancellation.h"
 
 #include <algorithm>
 #include <numeric>
@@ -34,6 +35,20 @@ LevelLines parse_level_lines(const std::string& name) {
   for (const LevelLines lines : {LevelLines::Contour, LevelLines::Paper})
     if (name == level_lines_name(lines)) return lines;
   throw InvalidArgument("unknown level lines '" + name + "' (expected contour or paper)");
+}
+
+const char* leaves_name(Leaves leaves) {
+  switch (leaves) {
+    case Leaves::Maxima: return "maxima";
+    case Leaves::Propagation: return "propagation";
+  }
+  throw InvalidArgument("leaves_name: unknown choice " + std::to_string(static_cast<int>(leaves)));
+}
+
+Leaves parse_leaves(const std::string& name) {
+  for (const Leaves leaves : {Leaves::Maxima, Leaves::Propagation})
+    if (name == leaves_name(leaves)) return leaves;
+  throw InvalidArgument("unknown leaves '" + name + "' (expected maxima or propagation)");
 }
 
 Index ReebGraph::connected_components() const {
@@ -264,8 +279,9 @@ ReebGraph propagate(const Mesh& mesh, const MeshGraph& graph, const std::vector<
 ReebGraph build_reeb_graph(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f,
                            const ReebOptions& options) {
   check_reeb_inputs("build_reeb_graph", mesh, graph, f, options);
-  return options.level_lines == LevelLines::Paper ? propagate<IncrementalLevelLines>(mesh, graph, f, options)
-                                                  : propagate<ContourLevelLines>(mesh, graph, f, options);
+  ReebGraph reeb = options.level_lines == LevelLines::Paper ? propagate<IncrementalLevelLines>(mesh, graph, f, options)
+                                                            : propagate<ContourLevelLines>(mesh, graph, f, options);
+  return options.leaves == Leaves::Maxima ? cancel_pits(std::move(reeb), graph, f) : reeb;
 }
 
 }  // namespace reebkit

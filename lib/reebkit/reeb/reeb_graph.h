@@ -113,10 +113,27 @@ const char* level_lines_name(LevelLines lines);
 /// Inverse of level_lines_name; throws InvalidArgument naming the accepted values.
 LevelLines parse_level_lines(const std::string& name);
 
+/// Which terminations of the propagation end a leaf (pit_cancellation.h).
+enum class Leaves : std::uint8_t {
+  /// Those at a local maximum of f (eq. 11): a termination whose region
+  /// holds none, where the front closed around vertices it had passed
+  /// above (a pit), is cancelled with the split that made it.
+  Maxima,
+  /// Every termination of the propagation, pits too.
+  Propagation
+};
+
+/// "maxima" or "propagation".
+const char* leaves_name(Leaves leaves);
+/// Inverse of leaves_name; throws InvalidArgument naming the accepted values.
+Leaves parse_leaves(const std::string& name);
+
 struct ReebOptions {
   /// The level lines whose evolution the graph records (default: the
   /// contours of the front, exact topology; Paper: Definition 6).
   LevelLines level_lines = LevelLines::Contour;
+  /// Which terminations end a leaf (default: those at a maximum of f).
+  Leaves leaves = Leaves::Maxima;
   /// false (default): the graph must be connected, as f_q needs; a
   /// propagation that leaves vertices unreached throws InvalidArgument.
   /// true: one root per connected component, each started at the

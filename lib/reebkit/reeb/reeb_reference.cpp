@@ -3,6 +3,7 @@
 #include "reebkit/core/error.h"
 #include "reebkit/reeb/contour_lines.h"
 #include "reebkit/reeb/dual_graph_recorder.h"
+#include "reebkit/reeb/pit_cancellation.h"
 
 #include <algorithm>
 #include <map>
@@ -257,8 +258,9 @@ ReebGraph paper_reference(const Mesh& mesh, const MeshGraph& graph, const std::v
 ReebGraph reference_reeb_graph(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f,
                                const ReebOptions& options) {
   check_reeb_inputs("reference_reeb_graph", mesh, graph, f, options);
-  return options.level_lines == LevelLines::Paper ? paper_reference(mesh, graph, f, options)
-                                                  : contour_reference(mesh, graph, f, options);
+  ReebGraph reeb = options.level_lines == LevelLines::Paper ? paper_reference(mesh, graph, f, options)
+                                                            : contour_reference(mesh, graph, f, options);
+  return options.leaves == Leaves::Maxima ? cancel_pits(std::move(reeb), graph, f) : reeb;
 }
 
 }  // namespace reebkit
