@@ -258,11 +258,12 @@ MeshTopology analyze_topology(const Mesh& mesh) {
   // smaller endpoint; at every endpoint the two triangles of a manifold edge
   // join their corners there into one fan; two boundary edges at a vertex
   // continue each other when they bound the same fan there (as if the vertex
-  // were split into its fans).
+  // were split into its fans); the endpoints of every edge join one component.
   const VertexCorners corners = corners_by_vertex(triangles, num_vertices);
   VertexStar star(num_vertices);
   Fans fans;
   OrientationSets orientation(topology.faces);
+  DisjointSets components(num_vertices);
   topology.orientable = true;
   std::vector<Index> boundary_halfedges;
   std::vector<std::pair<Index, Index>> continuations;
@@ -275,7 +276,10 @@ MeshTopology analyze_topology(const Mesh& mesh) {
     for (const VertexStar::Edge& edge : star) {
       if (edge.count == 2) fans.unite(edge.fan_corner[0], edge.fan_corner[1]);
       boundary = boundary || edge.count == 1;
-      if (edge.other < v) continue;
+      if (edge.other < v) {
+        components.unite(edge.other, v);
+        continue;
+      }
       ++topology.edges;
       if (edge.count == 1) boundary_halfedges.push_back(edge.halfedge[0]);
       if (edge.count > 2) ++topology.non_manifold_edges;
@@ -302,7 +306,8 @@ MeshTopology analyze_topology(const Mesh& mesh) {
   topology.boundary_edges = static_cast<Index>(boundary_halfedges.size());
   topology.boundary_loops = count_boundary_loops(std::move(boundary_halfedges), continuations);
 
-  topology.components = connected_components(triangles, num_vertices).count;
+  for (Index v = 0; v < num_vertices; ++v)
+    if (components.find(v) == v) ++topology.components;
   topology.euler_characteristic = num_vertices - topology.edges + topology.faces;
   topology.closed = topology.boundary_edges == 0;
   topology.manifold = topology.non_manifold_edges == 0 && topology.non_manifold_vertices == 0;
