@@ -16,7 +16,10 @@ namespace {
 /// root is the smallest element of its set.
 class DisjointSets {
  public:
-  explicit DisjointSets(Index n) : parent_(static_cast<std::size_t>(n)) {
+  explicit DisjointSets(Index n = 0) { reset(n); }
+  /// n singletons again, reusing the storage (the fans of one vertex after another).
+  void reset(Index n) {
+    parent_.resize(static_cast<std::size_t>(n));
     std::iota(parent_.begin(), parent_.end(), Index{0});
   }
   Index find(Index x) {
@@ -26,12 +29,14 @@ class DisjointSets {
     }
     return x;
   }
-  void unite(Index a, Index b) {
+  /// Joins the sets of a and b; false when they were one already.
+  bool unite(Index a, Index b) {
     a = find(a);
     b = find(b);
-    if (a == b) return;
+    if (a == b) return false;
     if (a > b) std::swap(a, b);
     parent_[b] = a;
+    return true;
   }
 
  private:
@@ -161,35 +166,6 @@ class VertexStar {
   Index size_ = 0;
 };
 
-/// Union-find over the corners of one vertex (path halving): the fans.
-class Fans {
- public:
-  void reset(Index degree) {
-    parent_.resize(static_cast<std::size_t>(degree));
-    std::iota(parent_.begin(), parent_.end(), Index{0});
-    count_ = degree;
-  }
-  Index find(Index x) {
-    while (parent_[x] != x) {
-      parent_[x] = parent_[parent_[x]];
-      x = parent_[x];
-    }
-    return x;
-  }
-  void unite(Index a, Index b) {
-    a = find(a);
-    b = find(b);
-    if (a == b) return;
-    parent_[std::max(a, b)] = std::min(a, b);
-    --count_;
-  }
-  Index count() const { return count_; }
-
- private:
-  std::vector<Index> parent_;
-  Index count_ = 0;
-};
-
 /// Closed chains of boundary edges, given each boundary edge by its one
 /// half-edge (`boundary_halfedges`, any order) and the pairs of boundary
 /// half-edges that continue each other at a vertex.
@@ -202,15 +178,10 @@ Index count_boundary_loops(std::vector<Index> boundary_halfedges,
   };
   const auto count = static_cast<Index>(boundary_halfedges.size());
   DisjointSets loops(count);
-  Index joined = 0;
-  for (const auto& [a, b] : continuations) {
-    const Index root_a = loops.find(id(a));
-    const Index root_b = loops.find(id(b));
-    if (root_a == root_b) continue;
-    loops.unite(root_a, root_b);
-    ++joined;
-  }
-  return count - joined;
+  Index loops_left = count;
+  for (const auto& [a, b] : continuations)
+    if (loops.unite(id(a), id(b))) --loops_left;
+  return loops_left;
 }
 
 }  // namespace
@@ -261,7 +232,7 @@ MeshTopology analyze_topology(const Mesh& mesh) {
   // were split into its fans); the endpoints of every edge join one component.
   const VertexCorners corners = corners_by_vertex(triangles, num_vertices);
   VertexStar star(num_vertices);
-  Fans fans;
+  DisjointSets fans;  // over the corners of one vertex, by their position among them
   OrientationSets orientation(topology.faces);
   DisjointSets components(num_vertices);
   topology.orientable = true;
@@ -272,9 +243,10 @@ MeshTopology analyze_topology(const Mesh& mesh) {
     const Index degree = corners.degree(v);
     star.collect(triangles, v, corners.corner.data() + corners.start[v], degree);
     fans.reset(degree);
+    Index fan_count = degree;
     bool boundary = false;
     for (const VertexStar::Edge& edge : star) {
-      if (edge.count == 2) fans.unite(edge.fan_corner[0], edge.fan_corner[1]);
+      if (edge.count == 2 && fans.unite(edge.fan_corner[0], edge.fan_corner[1])) --fan_count;
       boundary = boundary || edge.count == 1;
       if (edge.other < v) {
         components.unite(edge.other, v);
@@ -290,7 +262,7 @@ MeshTopology analyze_topology(const Mesh& mesh) {
         topology.orientable = orientation.relate(edge.halfedge[0] / 3, edge.halfedge[1] / 3, same_direction);
       }
     }
-    if (fans.count() != 1) ++topology.non_manifold_vertices;
+    if (fan_count != 1) ++topology.non_manifold_vertices;
     if (!boundary) continue;
     fan_boundary_halfedge.assign(static_cast<std::size_t>(degree), kInvalidIndex);
     for (const VertexStar::Edge& edge : star) {
