@@ -234,6 +234,30 @@ TEST(AnalyzeTopology, MoebiusStripIsNotOrientable) {
   EXPECT_EQ(topology.genus, -1);
 }
 
+TEST(AnalyzeTopology, KleinBottleIsClosedButNotOrientable) {
+  // A 6 x 5 grid whose columns wrap around and whose last row is glued to the
+  // first one mirrored: every edge has two triangles, chi = 0, yet going once
+  // around the rows flips the orientation, a contradiction that only shows
+  // after a long chain of triangles.
+  const Index n = 6;
+  const Index m = 5;
+  const auto vertex = [&](Index i, Index j) { return j == m ? (n - i % n) % n : j * n + i % n; };
+  std::vector<std::vector<Index>> triangles;
+  for (Index j = 0; j < m; ++j) {
+    for (Index i = 0; i < n; ++i) {
+      triangles.push_back({vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1)});
+      triangles.push_back({vertex(i, j), vertex(i + 1, j + 1), vertex(i, j + 1)});
+    }
+  }
+  const MeshTopology topology = analyze_topology(make_mesh(n * m, triangles));
+  expect_counts(topology, n * m, 3 * n * m, 2 * n * m, 1);
+  EXPECT_EQ(topology.euler_characteristic, 0);
+  EXPECT_TRUE(topology.closed);
+  EXPECT_TRUE(topology.manifold);
+  EXPECT_FALSE(topology.orientable);
+  EXPECT_EQ(topology.genus, -1);
+}
+
 TEST(AnalyzeTopology, RejectsBrokenTriangles) {
   EXPECT_THROW(analyze_topology(make_mesh(3, {{0, 1, 3}})), InvalidArgument);
   EXPECT_THROW(analyze_topology(make_mesh(3, {{0, 1, 1}})), InvalidArgument);
@@ -244,6 +268,34 @@ TEST(ConnectedComponents, LabelsFollowTheSmallestVertex) {
   const ComponentLabels labels = connected_components(mesh.triangles, mesh.num_vertices());
   EXPECT_EQ(labels.count, 3);  // {0,1,3}, {2} alone, {4,5,6}
   EXPECT_EQ(labels.vertex_component, (std::vector<Index>{0, 0, 1, 0, 2, 2, 2}));
+}
+
+TEST(CornersByVertex, EveryCornerOnceUnderItsVertexInOrder) {
+  const Mesh mesh = torus(12, 8);
+  const VertexCorners corners = corners_by_vertex(mesh.triangles, mesh.num_vertices());
+  ASSERT_EQ(corners.start.size(), 96u + 1);
+  ASSERT_EQ(corners.corner.size(), 3u * 192);
+  EXPECT_EQ(corners.start.front(), 0);
+  std::vector<int> seen(corners.corner.size(), 0);
+  for (Index v = 0; v < mesh.num_vertices(); ++v) {
+    EXPECT_EQ(corners.degree(v), 6);  // every vertex of the split-square torus lies on 6 triangles
+    for (Index i = corners.start[v]; i < corners.start[v + 1]; ++i) {
+      const Index c = corners.corner[i];
+      EXPECT_EQ(mesh.triangles(c / 3, c % 3), v);
+      if (i > corners.start[v]) {
+        EXPECT_LT(corners.corner[i - 1], c);
+      }
+      ++seen[c];
+    }
+  }
+  EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<std::ptrdiff_t>(seen.size()));
+}
+
+TEST(CornersByVertex, IsolatedVertexHasNoCorner) {
+  const Mesh mesh = make_mesh(5, {{4, 0, 1}, {1, 0, 3}});
+  const VertexCorners corners = corners_by_vertex(mesh.triangles, mesh.num_vertices());
+  EXPECT_EQ(corners.start, (std::vector<Index>{0, 2, 4, 4, 5, 6}));
+  EXPECT_EQ(corners.corner, (std::vector<Index>{1, 4, 2, 3, 5, 0}));
 }
 
 }  // namespace

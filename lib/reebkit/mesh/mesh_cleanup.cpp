@@ -174,6 +174,17 @@ std::vector<Index> triangulate_soup(const PolygonSoup& soup, const std::vector<I
   std::vector<Index> sorted;
   PolygonTriangulator triangulator;
   for (Index p = 0; p < soup.num_polygons(); ++p) {
+    if (soup.face_offset[p + 1] - soup.face_offset[p] == 3) {
+      // A triangle needs no collapsing, sorting or clipping: any repeat makes it degenerate.
+      const Index* corner = soup.face_vertex.data() + soup.face_offset[p];
+      const Index a = representative[corner[0]], b = representative[corner[1]], c = representative[corner[2]];
+      if (a == b || b == c || a == c) {
+        ++report.degenerate_faces_dropped;
+      } else {
+        triangles.insert(triangles.end(), {a, b, c});
+      }
+      continue;
+    }
     polygon.clear();
     for (Index i = soup.face_offset[p]; i < soup.face_offset[p + 1]; ++i) {
       const Index v = representative[soup.face_vertex[i]];
@@ -206,15 +217,18 @@ Index drop_duplicate_triangles(std::vector<Index>& triangles, Index num_vertices
   std::vector<std::array<Index, 3>> sorted(count);
   std::vector<Index> start(static_cast<std::size_t>(num_vertices) + 1, 0);
   for (std::size_t t = 0; t < count; ++t) {
-    sorted[t] = {triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2]};
-    std::sort(sorted[t].begin(), sorted[t].end());
-    ++start[static_cast<std::size_t>(sorted[t][0]) + 1];
+    Index a = triangles[3 * t], b = triangles[3 * t + 1], c = triangles[3 * t + 2];
+    if (a > b) std::swap(a, b);  // a sorting network of three
+    if (b > c) std::swap(b, c);
+    if (a > b) std::swap(a, b);
+    sorted[t] = {a, b, c};
+    ++start[static_cast<std::size_t>(a) + 1];
   }
   for (std::size_t v = 0; v < static_cast<std::size_t>(num_vertices); ++v) start[v + 1] += start[v];
   std::vector<Index> bucket(count), fill(start.begin(), start.end() - 1);
   for (std::size_t t = 0; t < count; ++t)
     bucket[static_cast<std::size_t>(fill[static_cast<std::size_t>(sorted[t][0])]++)] = static_cast<Index>(t);
-  std::vector<bool> duplicate(count, false);
+  std::vector<std::uint8_t> duplicate(count, 0);
   const auto triple = [&](Index t) { return sorted[static_cast<std::size_t>(t)]; };
   for (std::size_t v = 0; v < static_cast<std::size_t>(num_vertices); ++v) {
     const auto first = bucket.begin() + start[v], last = bucket.begin() + start[v + 1];
@@ -241,21 +255,27 @@ Index drop_duplicate_triangles(std::vector<Index>& triangles, Index num_vertices
 }
 
 /// The mesh on the referenced soup vertices (in soup order) of `triangles`.
+/// When every vertex is referenced (the usual case) the numbering is the
+/// soup's, and vertices and triangles are copied whole.
 Mesh compact_mesh(const PolygonSoup& soup, const std::vector<Index>& triangles) {
   std::vector<Index> new_index(static_cast<std::size_t>(soup.num_vertices()), kInvalidIndex);
   for (const Index v : triangles) new_index[v] = 0;
   Mesh mesh;
   mesh.source = soup.source;
+  mesh.source_vertex.reserve(new_index.size());
   for (Index v = 0; v < soup.num_vertices(); ++v) {
     if (new_index[v] == kInvalidIndex) continue;
     new_index[v] = static_cast<Index>(mesh.source_vertex.size());
     mesh.source_vertex.push_back(v);
   }
+  mesh.triangles = Eigen::Map<const Triangles>(triangles.data(), static_cast<Eigen::Index>(triangles.size() / 3), 3);
+  if (mesh.source_vertex.size() == new_index.size()) {
+    mesh.vertices = soup.vertices;
+    return mesh;
+  }
   mesh.vertices.resize(static_cast<Eigen::Index>(mesh.source_vertex.size()), 3);
   for (Index v = 0; v < mesh.num_vertices(); ++v) mesh.vertices.row(v) = soup.vertices.row(mesh.source_vertex[v]);
-  mesh.triangles.resize(static_cast<Eigen::Index>(triangles.size() / 3), 3);
-  for (Index t = 0; t < mesh.num_triangles(); ++t)
-    for (int k = 0; k < 3; ++k) mesh.triangles(t, k) = new_index[triangles[3 * t + k]];
+  for (Index& v : mesh.triangles.reshaped()) v = new_index[v];
   return mesh;
 }
 

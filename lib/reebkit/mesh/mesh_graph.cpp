@@ -1,5 +1,7 @@
 #include "reebkit/mesh/mesh_graph.h"
 
+#include "reebkit/mesh/mesh_topology.h"
+
 #include <algorithm>
 #include <array>
 
@@ -109,18 +111,8 @@ class LinkWalker {
 MeshGraph build_mesh_graph(const Mesh& mesh) {
   const Index nv = mesh.num_vertices();
   const Index nf = mesh.num_triangles();
-  // Vertex -> incident triangles (CSR).
-  std::vector<Index> tri_offset(static_cast<std::size_t>(nv) + 1, 0);
-  for (Index f = 0; f < nf; ++f)
-    for (int k = 0; k < 3; ++k) ++tri_offset[static_cast<std::size_t>(mesh.triangles(f, k)) + 1];
-  for (Index v = 0; v < nv; ++v) tri_offset[static_cast<std::size_t>(v) + 1] += tri_offset[static_cast<std::size_t>(v)];
-  std::vector<Index> tri_of(static_cast<std::size_t>(nf) * 3);
-  {
-    std::vector<Index> fill(tri_offset.begin(), tri_offset.end() - 1);
-    for (Index f = 0; f < nf; ++f)
-      for (int k = 0; k < 3; ++k)
-        tri_of[static_cast<std::size_t>(fill[static_cast<std::size_t>(mesh.triangles(f, k))]++)] = f;
-  }
+  // The incident triangles of each vertex, as its corners (corner c = 3 f + k).
+  const VertexCorners corners = corners_by_vertex(mesh.triangles, nv);
 
   MeshGraph g;
   g.offset.reserve(static_cast<std::size_t>(nv) + 1);
@@ -132,9 +124,10 @@ MeshGraph build_mesh_graph(const Mesh& mesh) {
   std::vector<std::array<Index, 2>> link_edges;
   for (Index v = 0; v < nv; ++v) {
     link_edges.clear();
-    for (Index i = tri_offset[static_cast<std::size_t>(v)]; i < tri_offset[static_cast<std::size_t>(v) + 1]; ++i) {
-      const Index f = tri_of[static_cast<std::size_t>(i)];
-      const int k = mesh.triangles(f, 0) == v ? 0 : mesh.triangles(f, 1) == v ? 1 : 2;
+    for (Index i = corners.start[static_cast<std::size_t>(v)]; i < corners.start[static_cast<std::size_t>(v) + 1];
+         ++i) {
+      const Index f = corners.corner[static_cast<std::size_t>(i)] / 3;
+      const Index k = corners.corner[static_cast<std::size_t>(i)] % 3;
       link_edges.push_back({mesh.triangles(f, (k + 1) % 3), mesh.triangles(f, (k + 2) % 3)});
     }
     walker.walk(link_edges, g);

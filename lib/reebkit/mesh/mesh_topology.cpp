@@ -16,7 +16,10 @@ namespace {
 /// root is the smallest element of its set.
 class DisjointSets {
  public:
-  explicit DisjointSets(Index n) : parent_(static_cast<std::size_t>(n)) {
+  explicit DisjointSets(Index n = 0) { reset(n); }
+  /// n singletons again, reusing the storage (the fans of one vertex after another).
+  void reset(Index n) {
+    parent_.resize(static_cast<std::size_t>(n));
     std::iota(parent_.begin(), parent_.end(), Index{0});
   }
   Index find(Index x) {
@@ -26,12 +29,14 @@ class DisjointSets {
     }
     return x;
   }
-  void unite(Index a, Index b) {
+  /// Joins the sets of a and b; false when they were one already.
+  bool unite(Index a, Index b) {
     a = find(a);
     b = find(b);
-    if (a == b) return;
+    if (a == b) return false;
     if (a > b) std::swap(a, b);
     parent_[b] = a;
+    return true;
   }
 
  private:
@@ -56,87 +61,127 @@ void check_triangles(const Triangles& triangles, Index num_vertices, bool distin
 
 // Half-edge h = 3 t + k of triangle t runs from corner k to corner (k + 1) % 3;
 // corner c = 3 t + k is vertex triangles(t, k) as seen from triangle t.
-Index corner_vertex(const Triangles& triangles, Index c) { return triangles(c / 3, c % 3); }
-Index next_corner(Index c) { return c - c % 3 + (c % 3 + 1) % 3; }
+// Triangles are row-major, so corner c is entry c of the index array.
+Index corner_vertex(const Triangles& triangles, Index c) { return triangles.data()[c]; }
+Index next_corner(Index c) { return c % 3 == 2 ? c - 2 : c + 1; }
+Index previous_corner(Index c) { return c % 3 == 0 ? c + 2 : c - 1; }
 
-/// The half-edges grouped by undirected edge: edge e owns
-/// halfedges[edge_start[e] .. edge_start[e + 1]). Built by a counting sort on
-/// the smaller endpoint and small sorts on the larger one: O(F log d), d = max degree.
-struct EdgeTable {
-  std::vector<Index> halfedges;
-  std::vector<Index> edge_start{0};
+/// Union-find over triangles that keeps, for each triangle, whether it must be
+/// flipped relative to the root of its set (path halving; the smaller index
+/// becomes the root). The triangles can be oriented consistently exactly when
+/// no relation contradicts the earlier ones: a two-colouring of the manifold
+/// edges' constraints, found in the same pass as the edges.
+class OrientationSets {
+ public:
+  explicit OrientationSets(Index n) : parent_(static_cast<std::size_t>(n)), flipped_(static_cast<std::size_t>(n), 0) {
+    std::iota(parent_.begin(), parent_.end(), Index{0});
+  }
 
-  Index num_edges() const { return static_cast<Index>(edge_start.size()) - 1; }
-  Index size(Index e) const { return edge_start[e + 1] - edge_start[e]; }
+  /// Requires t and u to be flipped alike, or differently when `differ`;
+  /// false when the relations so far forbid it.
+  bool relate(Index t, Index u, bool differ) {
+    auto [root_t, flip_t] = find(t);
+    auto [root_u, flip_u] = find(u);
+    const auto flip = static_cast<std::uint8_t>(flip_t ^ flip_u ^ static_cast<std::uint8_t>(differ));
+    if (root_t == root_u) return flip == 0;
+    if (root_t > root_u) std::swap(root_t, root_u);
+    parent_[root_u] = root_t;
+    flipped_[root_u] = flip;
+    return true;
+  }
+
+ private:
+  /// The root of x's set and whether x is flipped relative to it. A root's
+  /// own flag stays 0.
+  std::pair<Index, std::uint8_t> find(Index x) {
+    std::uint8_t flip = 0;
+    while (parent_[x] != x) {
+      const Index p = parent_[x];
+      flipped_[x] ^= flipped_[p];
+      parent_[x] = parent_[p];
+      flip ^= flipped_[x];
+      x = parent_[x];
+    }
+    return {x, flip};
+  }
+
+  std::vector<Index> parent_;
+  std::vector<std::uint8_t> flipped_;
 };
 
-EdgeTable build_edge_table(const Triangles& triangles, Index num_vertices) {
-  const Index num_halfedges = 3 * static_cast<Index>(triangles.rows());
-  std::vector<Index> bucket_start(static_cast<std::size_t>(num_vertices) + 1, 0);
-  for (Index h = 0; h < num_halfedges; ++h) {
-    const Index a = corner_vertex(triangles, h);
-    const Index b = corner_vertex(triangles, next_corner(h));
-    ++bucket_start[std::min(a, b) + 1];
-  }
-  std::partial_sum(bucket_start.begin(), bucket_start.end(), bucket_start.begin());
+/// The edges at one vertex v, found from its corners: each incident triangle
+/// gives two half-edges, one leaving v and one entering it, grouped by their
+/// other endpoint. A neighbour's entry (#V of them) holds the vertex whose star
+/// last saw it and its edge there, so nothing is cleared between vertices and
+/// finding an edge takes one look-up.
+class VertexStar {
+ public:
+  struct Edge {
+    Index other = 0;           ///< the endpoint that is not v
+    Index count = 0;           ///< triangles on the edge
+    Index halfedge[2] = {};    ///< the first two half-edges
+    Index fan_corner[2] = {};  ///< their triangles' corners at v, as positions among v's corners
+  };
 
-  // (larger endpoint, half-edge), bucketed by the smaller endpoint.
-  std::vector<std::pair<Index, Index>> entries(static_cast<std::size_t>(num_halfedges));
-  std::vector<Index> fill(bucket_start.begin(), bucket_start.end() - 1);
-  for (Index h = 0; h < num_halfedges; ++h) {
-    const Index a = corner_vertex(triangles, h);
-    const Index b = corner_vertex(triangles, next_corner(h));
-    entries[fill[std::min(a, b)]++] = {std::max(a, b), h};
-  }
+  explicit VertexStar(Index num_vertices) : seen_(static_cast<std::size_t>(num_vertices), Seen{kInvalidIndex, 0}) {}
 
-  EdgeTable table;
-  table.halfedges.reserve(entries.size());
-  table.edge_start.reserve(entries.size() / 2 + 2);
-  for (Index v = 0; v < num_vertices; ++v) {
-    const auto first = entries.begin() + bucket_start[v];
-    const auto last = entries.begin() + bucket_start[v + 1];
-    std::sort(first, last);
-    for (auto it = first; it != last; ++it) {
-      if (it != first && it->first != (it - 1)->first)
-        table.edge_start.push_back(static_cast<Index>(table.halfedges.size()));
-      table.halfedges.push_back(it->second);
-    }
-    if (first != last) table.edge_start.push_back(static_cast<Index>(table.halfedges.size()));
-  }
-  return table;
-}
-
-/// True when the triangles of every component can be flipped so that each
-/// manifold edge is traversed once in each direction. mate[h] is the other
-/// half-edge of h's edge when that edge is manifold, else kInvalidIndex.
-bool is_orientable(const Triangles& triangles, const std::vector<Index>& mate) {
-  const Index num_triangles = static_cast<Index>(triangles.rows());
-  std::vector<std::int8_t> flipped(static_cast<std::size_t>(num_triangles), -1);
-  std::vector<Index> stack;
-  for (Index seed = 0; seed < num_triangles; ++seed) {
-    if (flipped[seed] >= 0) continue;
-    flipped[seed] = 0;
-    stack.push_back(seed);
-    while (!stack.empty()) {
-      const Index t = stack.back();
-      stack.pop_back();
-      for (Index h = 3 * t; h < 3 * t + 3; ++h) {
-        const Index m = mate[h];
-        if (m == kInvalidIndex) continue;
-        // Same start vertex = same direction: exactly one of the two must flip.
-        const bool same_direction = corner_vertex(triangles, h) == corner_vertex(triangles, m);
-        const auto want = static_cast<std::int8_t>(flipped[t] ^ static_cast<std::int8_t>(same_direction));
-        const Index u = m / 3;
-        if (flipped[u] < 0) {
-          flipped[u] = want;
-          stack.push_back(u);
-        } else if (flipped[u] != want) {
-          return false;
-        }
-      }
+  /// Collects the edges of v from its corners (corner positions 0, 1, ...).
+  void collect(const Triangles& triangles, Index v, const Index* first_corner, Index degree) {
+    if (edges_.size() < 2 * static_cast<std::size_t>(degree)) edges_.resize(2 * static_cast<std::size_t>(degree));
+    size_ = 0;
+    for (Index i = 0; i < degree; ++i) {
+      const Index c = first_corner[i];
+      add(v, corner_vertex(triangles, next_corner(c)), c, i);
+      const Index entering = previous_corner(c);
+      add(v, corner_vertex(triangles, entering), entering, i);
     }
   }
-  return true;
+
+  const Edge* begin() const { return edges_.data(); }
+  const Edge* end() const { return edges_.data() + size_; }
+
+ private:
+  struct Seen {
+    Index star;  ///< the vertex whose star saw this neighbour last
+    Index edge;  ///< its edge there
+  };
+
+  void add(Index v, Index other, Index halfedge, Index fan_corner) {
+    Seen& seen = seen_[static_cast<std::size_t>(other)];
+    if (seen.star != v) {
+      seen = Seen{v, size_};
+      edges_[static_cast<std::size_t>(size_++)] = Edge{other, 1, {halfedge, 0}, {fan_corner, 0}};
+      return;
+    }
+    Edge& edge = edges_[static_cast<std::size_t>(seen.edge)];
+    if (edge.count == 1) {
+      edge.halfedge[1] = halfedge;
+      edge.fan_corner[1] = fan_corner;
+    }
+    ++edge.count;
+  }
+
+  std::vector<Seen> seen_;
+  std::vector<Edge> edges_;  // the first size_ are v's
+  Index size_ = 0;
+};
+
+/// Closed chains of boundary edges, given each boundary edge by its one
+/// half-edge (`boundary_halfedges`, any order) and the pairs of boundary
+/// half-edges that continue each other at a vertex.
+Index count_boundary_loops(std::vector<Index> boundary_halfedges,
+                           const std::vector<std::pair<Index, Index>>& continuations) {
+  std::sort(boundary_halfedges.begin(), boundary_halfedges.end());
+  const auto id = [&](Index h) {
+    return static_cast<Index>(std::lower_bound(boundary_halfedges.begin(), boundary_halfedges.end(), h) -
+                              boundary_halfedges.begin());
+  };
+  const auto count = static_cast<Index>(boundary_halfedges.size());
+  DisjointSets loops(count);
+  Index loops_left = count;
+  for (const auto& [a, b] : continuations)
+    if (loops.unite(id(a), id(b))) --loops_left;
+  return loops_left;
 }
 
 }  // namespace
@@ -157,10 +202,22 @@ ComponentLabels connected_components(const Triangles& triangles, Index num_verti
   return labels;
 }
 
+VertexCorners corners_by_vertex(const Triangles& triangles, Index num_vertices) {
+  const Index num_corners = 3 * static_cast<Index>(triangles.rows());
+  VertexCorners corners;
+  corners.start.assign(static_cast<std::size_t>(num_vertices) + 1, 0);
+  for (Index c = 0; c < num_corners; ++c) ++corners.start[static_cast<std::size_t>(corner_vertex(triangles, c)) + 1];
+  std::partial_sum(corners.start.begin(), corners.start.end(), corners.start.begin());
+  corners.corner.resize(static_cast<std::size_t>(num_corners));
+  std::vector<Index> fill(corners.start.begin(), corners.start.end() - 1);
+  for (Index c = 0; c < num_corners; ++c)
+    corners.corner[static_cast<std::size_t>(fill[corner_vertex(triangles, c)]++)] = c;
+  return corners;
+}
+
 MeshTopology analyze_topology(const Mesh& mesh) {
   const Triangles& triangles = mesh.triangles;
   const Index num_vertices = mesh.num_vertices();
-  const Index num_corners = 3 * mesh.num_triangles();
   check_triangles(triangles, num_vertices, true,
                   "analyze_topology(" + (mesh.source.empty() ? std::string("<memory>") : mesh.source) + ")");
 
@@ -168,63 +225,64 @@ MeshTopology analyze_topology(const Mesh& mesh) {
   topology.vertices = num_vertices;
   topology.faces = mesh.num_triangles();
 
-  // Classify edges; join the corners of the two triangles of each manifold
-  // edge at both endpoints, so corner sets become the fans around each vertex.
-  const EdgeTable edges = build_edge_table(triangles, num_vertices);
-  topology.edges = edges.num_edges();
-  std::vector<Index> mate(static_cast<std::size_t>(num_corners), kInvalidIndex);
-  DisjointSets fans(num_corners);
-  for (Index e = 0; e < edges.num_edges(); ++e) {
-    const Index size = edges.size(e);
-    if (size == 1) ++topology.boundary_edges;
-    if (size > 2) ++topology.non_manifold_edges;
-    if (size != 2) continue;
-    const Index h = edges.halfedges[edges.edge_start[e]];
-    const Index m = edges.halfedges[edges.edge_start[e] + 1];
-    mate[h] = m;
-    mate[m] = h;
-    if (corner_vertex(triangles, h) == corner_vertex(triangles, m)) {
-      fans.unite(h, m);
-      fans.unite(next_corner(h), next_corner(m));
-    } else {
-      fans.unite(h, next_corner(m));
-      fans.unite(next_corner(h), m);
-    }
-  }
-
-  std::vector<Index> fans_at_vertex(static_cast<std::size_t>(num_vertices), 0);
-  for (Index c = 0; c < num_corners; ++c)
-    if (fans.find(c) == c) ++fans_at_vertex[corner_vertex(triangles, c)];
-  topology.non_manifold_vertices =
-      static_cast<Index>(std::count_if(fans_at_vertex.begin(), fans_at_vertex.end(), [](Index n) { return n != 1; }));
-
-  // Boundary loops: two boundary edges meeting at a vertex continue each
-  // other when they bound the same fan there.
+  // One pass over the vertices, each with its star: an edge is counted at its
+  // smaller endpoint; at every endpoint the two triangles of a manifold edge
+  // join their corners there into one fan; two boundary edges at a vertex
+  // continue each other when they bound the same fan there (as if the vertex
+  // were split into its fans); the endpoints of every edge join one component.
+  const VertexCorners corners = corners_by_vertex(triangles, num_vertices);
+  VertexStar star(num_vertices);
+  DisjointSets fans;  // over the corners of one vertex, by their position among them
+  OrientationSets orientation(topology.faces);
+  DisjointSets components(num_vertices);
+  topology.orientable = true;
   std::vector<Index> boundary_halfedges;
-  boundary_halfedges.reserve(static_cast<std::size_t>(topology.boundary_edges));
-  for (Index e = 0; e < edges.num_edges(); ++e)
-    if (edges.size(e) == 1) boundary_halfedges.push_back(edges.halfedges[edges.edge_start[e]]);
-  DisjointSets loops(topology.boundary_edges);
-  std::vector<Index> fan_boundary_edge(static_cast<std::size_t>(num_corners), kInvalidIndex);
-  for (Index b = 0; b < topology.boundary_edges; ++b) {
-    const Index h = boundary_halfedges[b];
-    for (const Index corner : {h, next_corner(h)}) {
-      Index& first = fan_boundary_edge[fans.find(corner)];
+  std::vector<std::pair<Index, Index>> continuations;
+  std::vector<Index> fan_boundary_halfedge;  // per corner position of the vertex: first boundary half-edge of its fan
+  for (Index v = 0; v < num_vertices; ++v) {
+    const Index degree = corners.degree(v);
+    star.collect(triangles, v, corners.corner.data() + corners.start[v], degree);
+    fans.reset(degree);
+    Index fan_count = degree;
+    bool boundary = false;
+    for (const VertexStar::Edge& edge : star) {
+      if (edge.count == 2 && fans.unite(edge.fan_corner[0], edge.fan_corner[1])) --fan_count;
+      boundary = boundary || edge.count == 1;
+      if (edge.other < v) {
+        components.unite(edge.other, v);
+        continue;
+      }
+      ++topology.edges;
+      if (edge.count == 1) boundary_halfedges.push_back(edge.halfedge[0]);
+      if (edge.count > 2) ++topology.non_manifold_edges;
+      if (edge.count == 2 && topology.orientable) {
+        // Same start vertex = same direction: exactly one of the two must flip.
+        const bool same_direction =
+            corner_vertex(triangles, edge.halfedge[0]) == corner_vertex(triangles, edge.halfedge[1]);
+        topology.orientable = orientation.relate(edge.halfedge[0] / 3, edge.halfedge[1] / 3, same_direction);
+      }
+    }
+    if (fan_count != 1) ++topology.non_manifold_vertices;
+    if (!boundary) continue;
+    fan_boundary_halfedge.assign(static_cast<std::size_t>(degree), kInvalidIndex);
+    for (const VertexStar::Edge& edge : star) {
+      if (edge.count != 1) continue;
+      Index& first = fan_boundary_halfedge[static_cast<std::size_t>(fans.find(edge.fan_corner[0]))];
       if (first == kInvalidIndex) {
-        first = b;
+        first = edge.halfedge[0];
       } else {
-        loops.unite(first, b);
+        continuations.emplace_back(first, edge.halfedge[0]);
       }
     }
   }
-  for (Index b = 0; b < topology.boundary_edges; ++b)
-    if (loops.find(b) == b) ++topology.boundary_loops;
+  topology.boundary_edges = static_cast<Index>(boundary_halfedges.size());
+  topology.boundary_loops = count_boundary_loops(std::move(boundary_halfedges), continuations);
 
-  topology.components = connected_components(triangles, num_vertices).count;
+  for (Index v = 0; v < num_vertices; ++v)
+    if (components.find(v) == v) ++topology.components;
   topology.euler_characteristic = num_vertices - topology.edges + topology.faces;
   topology.closed = topology.boundary_edges == 0;
   topology.manifold = topology.non_manifold_edges == 0 && topology.non_manifold_vertices == 0;
-  topology.orientable = is_orientable(triangles, mate);
   if (topology.manifold && topology.orientable)
     topology.genus = (2 * topology.components - topology.euler_characteristic - topology.boundary_loops) / 2;
   return topology;

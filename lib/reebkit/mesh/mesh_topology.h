@@ -44,6 +44,21 @@ struct MeshTopology {
 ///      every Mesh clean_mesh returns); throws InvalidArgument otherwise.
 MeshTopology analyze_topology(const Mesh& mesh);
 
+/// The corners of a triangle mesh grouped by vertex. Corner c = 3 t + k is
+/// vertex triangles(t, k) as seen from triangle t; the corners of v are
+/// corner[start[v] .. start[v + 1]), in increasing order, so one per incident
+/// triangle, in triangle order.
+struct VertexCorners {
+  std::vector<Index> start;   ///< #V + 1
+  std::vector<Index> corner;  ///< 3 #F
+
+  Index degree(Index v) const { return start[v + 1] - start[v]; }  ///< incident triangles
+};
+
+/// Corners of `triangles` grouped by vertex, by a counting sort: O(#V + #F).
+/// Indices must lie in [0, num_vertices).
+VertexCorners corners_by_vertex(const Triangles& triangles, Index num_vertices);
+
 /// Vertex-connected components of `triangles` over `num_vertices` vertices.
 struct ComponentLabels {
   std::vector<Index> vertex_component;  ///< #V, component id in [0, count); ids follow the smallest vertex
