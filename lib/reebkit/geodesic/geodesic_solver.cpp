@@ -1,24 +1,21 @@
 #include "reebkit/geodesic/geodesic_solver.h"
 
 #include "reebkit/core/error.h"
+#include "reebkit/core/named_values.h"
 #include "reebkit/geodesic/dijkstra.h"
 #include "reebkit/geodesic/fast_marching.h"
 
 namespace reebkit {
 
-const char* geodesic_name(Geodesic method) {
-  switch (method) {
-    case Geodesic::Dijkstra: return "dijkstra";
-    case Geodesic::FastMarching: return "fmm";
-  }
-  throw InvalidArgument("geodesic_name: unknown method " + std::to_string(static_cast<int>(method)));
-}
+namespace {
+constexpr NamedValues<Geodesic, 2> kGeodesicNames{"geodesic method",
+                                                  {{{Geodesic::Dijkstra, "dijkstra"},
+                                                    {Geodesic::FastMarching, "fmm"}}}};
+}  // namespace
 
-Geodesic parse_geodesic(const std::string& name) {
-  for (const Geodesic m : {Geodesic::Dijkstra, Geodesic::FastMarching})
-    if (name == geodesic_name(m)) return m;
-  throw InvalidArgument("unknown geodesic method '" + name + "' (expected dijkstra or fmm)");
-}
+const char* geodesic_name(Geodesic method) { return kGeodesicNames.name(method); }
+
+Geodesic parse_geodesic(const std::string& name) { return kGeodesicNames.parse(name); }
 
 GeodesicSolver::GeodesicSolver(const MeshGraph& graph) : graph_(graph) {
   const auto n = static_cast<std::size_t>(graph.num_vertices());

@@ -1,6 +1,7 @@
 #include "reebkit/reeb/reeb_graph.h"
 
 #include "reebkit/core/error.h"
+#include "reebkit/core/named_values.h"
 #include "reebkit/features/critical_points.h"
 #include "reebkit/reeb/contour_lines.h"
 #include "reebkit/reeb/dual_graph_recorder.h"
@@ -23,33 +24,21 @@ const char* node_type_name(NodeType type) {
   return "unknown";
 }
 
-const char* level_lines_name(LevelLines lines) {
-  switch (lines) {
-    case LevelLines::Contour: return "contour";
-    case LevelLines::Paper: return "paper";
-  }
-  throw InvalidArgument("level_lines_name: unknown definition " + std::to_string(static_cast<int>(lines)));
-}
+namespace {
+constexpr NamedValues<LevelLines, 2> kLevelLinesNames{"level lines",
+                                                      {{{LevelLines::Contour, "contour"},
+                                                        {LevelLines::Paper, "paper"}}}};
+constexpr NamedValues<Leaves, 2> kLeavesNames{"leaves",
+                                              {{{Leaves::Maxima, "maxima"}, {Leaves::Propagation, "propagation"}}}};
+}  // namespace
 
-LevelLines parse_level_lines(const std::string& name) {
-  for (const LevelLines lines : {LevelLines::Contour, LevelLines::Paper})
-    if (name == level_lines_name(lines)) return lines;
-  throw InvalidArgument("unknown level lines '" + name + "' (expected contour or paper)");
-}
+const char* level_lines_name(LevelLines lines) { return kLevelLinesNames.name(lines); }
 
-const char* leaves_name(Leaves leaves) {
-  switch (leaves) {
-    case Leaves::Maxima: return "maxima";
-    case Leaves::Propagation: return "propagation";
-  }
-  throw InvalidArgument("leaves_name: unknown choice " + std::to_string(static_cast<int>(leaves)));
-}
+LevelLines parse_level_lines(const std::string& name) { return kLevelLinesNames.parse(name); }
 
-Leaves parse_leaves(const std::string& name) {
-  for (const Leaves leaves : {Leaves::Maxima, Leaves::Propagation})
-    if (name == leaves_name(leaves)) return leaves;
-  throw InvalidArgument("unknown leaves '" + name + "' (expected maxima or propagation)");
-}
+const char* leaves_name(Leaves leaves) { return kLeavesNames.name(leaves); }
+
+Leaves parse_leaves(const std::string& name) { return kLeavesNames.parse(name); }
 
 Index ReebGraph::connected_components() const {
   std::vector<Index> parent(nodes.size());
