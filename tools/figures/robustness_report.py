@@ -392,8 +392,10 @@ def main():
     out += [f"- {s['step']}: {s['seconds']} s" for s in steps if s["step"] != "total"] + [""]
     out.append("Defaults (docs/method.md): geodesic distances by fast marching (`fmm`; the diameter search on "
                "Dijkstra passes, its last sweep in fast marching), persistence filter 0.01, epsilon 0.05, up to 3 "
-               "extra sweeps. Dijkstra (`dijkstra`), the paper's method and reebkit's default before layout 7, is "
-               "measured beside it in sections 2, 3 and 6: old and new side by side.\n")
+               "extra sweeps, leaves only at the maxima of f_q (`--leaves maxima`: the pits of the propagation "
+               "cancelled; docs/results.md, \"Leaves at the maxima of f_q\", compares it with `propagation`). "
+               "Dijkstra (`dijkstra`), the paper's method and reebkit's default before layout 7, is measured beside "
+               "it in sections 2, 3 and 6: old and new side by side.\n")
     rigid_section(work, out)
     sampling_section(work, report, out)
     pose_section(work, report, out)
