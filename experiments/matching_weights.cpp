@@ -229,7 +229,7 @@ int main(int argc, char** argv) {
         {"global spectrum 0", [](Options& o) { o.global_spectrum_weight = 0; }},
         {"+ Euclidean: shape 2", [](Options& o) { o.shape_weight = 2; }},
         {"+ Euclidean: global D2 1.6", [](Options& o) { o.global_shape_weight = 1.6; }},
-        {"global geodesic 0", [](Options& o) { o.global_geodesic_weight = 0; }},
+        {"global geodesic 0.8", [](Options& o) { o.global_geodesic_weight = 0.8; }},
         {"geodesic shape 2", [](Options& o) { o.geodesic_shape_weight = 2; }},
         {"attribute 2", [](Options& o) { o.attribute_weight = 2; }},
         {"attribute 8", [](Options& o) { o.attribute_weight = 8; }},

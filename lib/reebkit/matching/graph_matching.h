@@ -52,7 +52,7 @@ namespace reebkit {
 ///   near (two people, one body in two poses) while the graph ranks the
 ///   others (two classes differ in both; the graph tells which are nearer).
 /// Defaults: every term intrinsic (unchanged when the surface bends), the
-/// Euclidean ones h and g off; the weights chosen on SHREC07 and the
+/// Euclidean ones h and g off, and h_g and g_g off too; the weights chosen on SHREC07 and the
 /// body-shape benchmark together, the demo's variants as guard, and reported
 /// on the TOSCA collections (results/matching_weights.md).
 struct MatchingOptions {
@@ -63,7 +63,7 @@ struct MatchingOptions {
   double shape_weight = 0.0;            ///< weight of h(i, j): Euclidean, follows the pose
   double geodesic_shape_weight = 0.0;   ///< weight of h_g(i, j)
   double global_shape_weight = 0.0;     ///< weight of g(A, B): Euclidean, follows the pose
-  double global_geodesic_weight = 0.8;  ///< weight of g_g(A, B)
+  double global_geodesic_weight = 0.0;  ///< weight of g_g(A, B)
   double spectrum_weight = 4.0;         ///< weight of r(i, j)
   double global_spectrum_weight = 8.0;  ///< weight of g_s(A, B)
   /// How many of the kGlobalSpectrumLength eigenvalues g_s compares (the
