@@ -98,6 +98,7 @@ TEST(CriticalPoints, RingCountMatchesBruteForceIncludingBoundaries) {
       const LinkCount fast = count_link_components(g, f, v), slow = brute_force_link(mesh, f, v);
       EXPECT_EQ(fast.upper, slow.upper) << "vertex " << v;
       EXPECT_EQ(fast.lower, slow.lower) << "vertex " << v;
+      EXPECT_EQ(is_local_maximum(g, f, v), slow.upper == 0) << "vertex " << v;
     }
   }
 }

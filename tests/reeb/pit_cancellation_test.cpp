@@ -20,12 +20,9 @@ namespace {
 /// The nodes whose region holds a local maximum of f.
 std::vector<bool> peaks(const ReebGraph& g, const MeshGraph& graph, const std::vector<double>& f) {
   std::vector<bool> peak(static_cast<std::size_t>(g.num_nodes()), false);
-  for (Index v = 0; v < graph.num_vertices(); ++v) {
-    bool maximum = true;
-    for (Index i = graph.offset[static_cast<std::size_t>(v)]; i < graph.offset[static_cast<std::size_t>(v) + 1]; ++i)
-      maximum = maximum && !sos_less(f, v, graph.neighbor[static_cast<std::size_t>(i)]);
-    if (maximum) peak[static_cast<std::size_t>(g.vertex_node[static_cast<std::size_t>(v)])] = true;
-  }
+  for (Index v = 0; v < graph.num_vertices(); ++v)
+    if (is_local_maximum(graph, f, v))
+      peak[static_cast<std::size_t>(g.vertex_node[static_cast<std::size_t>(v)])] = true;
   return peak;
 }
 

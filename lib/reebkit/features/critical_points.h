@@ -17,6 +17,13 @@ inline bool sos_less(const std::vector<double>& f, Index a, Index b) {
          (f[static_cast<std::size_t>(a)] == f[static_cast<std::size_t>(b)] && a < b);
 }
 
+/// True when no neighbour of v lies above it (sos order): L+ = 0.
+inline bool is_local_maximum(const MeshGraph& graph, const std::vector<double>& f, Index v) {
+  for (Index i = graph.offset[static_cast<std::size_t>(v)]; i < graph.offset[static_cast<std::size_t>(v) + 1]; ++i)
+    if (sos_less(f, v, graph.neighbor[static_cast<std::size_t>(i)])) return false;
+  return true;
+}
+
 enum class CriticalType : unsigned char { Regular, Minimum, Maximum, Saddle };
 
 struct LinkCount {

@@ -1,21 +1,16 @@
 #include "reebkit/reeb/contour_lines.h"
 
+#include "reebkit/mesh/mesh_topology.h"
+
 #include <algorithm>
 #include <stdexcept>
 
 namespace reebkit {
 
 VertexTriangles vertex_triangles(const Mesh& mesh) {
-  VertexTriangles out;
-  out.offset.assign(static_cast<std::size_t>(mesh.num_vertices()) + 1, 0);
-  for (Index t = 0; t < mesh.num_triangles(); ++t)
-    for (int k = 0; k < 3; ++k) ++out.offset[static_cast<std::size_t>(mesh.triangles(t, k)) + 1];
-  for (std::size_t v = 1; v < out.offset.size(); ++v) out.offset[v] += out.offset[v - 1];
-  out.triangle.resize(static_cast<std::size_t>(out.offset.back()));
-  std::vector<Index> fill(out.offset.begin(), out.offset.end() - 1);
-  for (Index t = 0; t < mesh.num_triangles(); ++t)
-    for (int k = 0; k < 3; ++k)
-      out.triangle[static_cast<std::size_t>(fill[static_cast<std::size_t>(mesh.triangles(t, k))]++)] = t;
+  VertexCorners corners = corners_by_vertex(mesh.triangles, mesh.num_vertices());
+  VertexTriangles out{std::move(corners.start), std::move(corners.corner)};
+  for (Index& t : out.triangle) t /= 3;  // corner 3 t + k -> triangle t
   return out;
 }
 

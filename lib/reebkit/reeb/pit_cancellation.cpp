@@ -34,12 +34,8 @@ ReebGraph cancel_pits(ReebGraph graph, const MeshGraph& mesh_graph, const std::v
   const auto n = graph.nodes.size();
   const auto at = [](Index i) { return static_cast<std::size_t>(i); };
   std::vector<char> peak(n, 0);  // the region holds a local maximum of f
-  for (Index v = 0; v < mesh_graph.num_vertices(); ++v) {
-    bool maximum = true;
-    for (Index i = mesh_graph.offset[at(v)]; i < mesh_graph.offset[at(v) + 1] && maximum; ++i)
-      maximum = !sos_less(f, v, mesh_graph.neighbor[at(i)]);
-    if (maximum) peak[at(graph.vertex_node[at(v)])] = 1;
-  }
+  for (Index v = 0; v < mesh_graph.num_vertices(); ++v)
+    if (is_local_maximum(mesh_graph, f, v)) peak[at(graph.vertex_node[at(v)])] = 1;
   std::vector<std::vector<Index>> in(n), out(n);
   for (const auto& [a, b] : graph.edges) {
     out[at(a)].push_back(b);
