@@ -2,6 +2,7 @@
 
 #include "reebkit/core/error.h"
 #include "reebkit/mesh/load_mesh.h"
+#include "reebkit/mesh/resampling.h"
 #include "reebkit/mesh/shapes.h"
 #include "reebkit/mesh/transform.h"
 #include "support/test_support.h"
@@ -37,8 +38,9 @@ std::vector<Index> labels_by_height(const Mesh& mesh, double level = 0.0) {
 
 /// The largest difference between the spectra of `mesh` and those of three
 /// random similar copies with their vertices renumbered.
-double largest_change_under_similarity(const Mesh& mesh, const std::vector<Index>& label, Index regions) {
-  const SurfaceSpectra before = surface_spectra(mesh, label, regions);
+double largest_change_under_similarity(const Mesh& mesh, const std::vector<Index>& label, Index regions,
+                                        const SpectraOptions& options = {}) {
+  const SurfaceSpectra before = surface_spectra(mesh, label, regions, options);
   std::mt19937_64 rng(7);
   double largest = 0.0;
   for (int trial = 0; trial < 3; ++trial) {
@@ -48,7 +50,7 @@ double largest_change_under_similarity(const Mesh& mesh, const std::vector<Index
     std::shuffle(order.begin(), order.end(), rng);
     std::vector<Index> moved_label(label.size());
     for (std::size_t v = 0; v < label.size(); ++v) moved_label[static_cast<std::size_t>(order[v])] = label[v];
-    const SurfaceSpectra after = surface_spectra(test::renumbered(moved, order), moved_label, regions);
+    const SurfaceSpectra after = surface_spectra(test::renumbered(moved, order), moved_label, regions, options);
     for (std::size_t k = 0; k < before.global.size(); ++k)
       largest = std::max(largest, std::abs(after.global[k] - before.global[k]));
     for (std::size_t k = 0; k < before.region.size(); ++k)
@@ -108,6 +110,48 @@ TEST(RegionSpectra, SimilarityAndRenumberingLeaveTheSpectraUnchanged) {
   ASSERT_GT(star.num_vertices(), SpectraOptions{}.coarse_vertices);
   ASSERT_GE(canonical_copy(star).axis_gap, SpectraOptions{}.min_axis_gap);
   EXPECT_LT(largest_change_under_similarity(star, labels_by_height(star), 2), 1e-6);
+  // Also where the surface is first decimated to a finer copy (a large mesh).
+  SpectraOptions fine;
+  fine.fine_vertices = star.num_vertices() / 2;
+  ASSERT_TRUE(spectra_surface(star, fine).decimated);
+  EXPECT_LT(largest_change_under_similarity(star, labels_by_height(star), 2, fine), 1e-6);
+}
+
+// A surface of more than fine_vertices vertices is decimated once to about
+// that many, and its coarse copies are taken from there: the spectra stay
+// those of the surface (the bunny's subdivided once, its regions cut at
+// mid-height).
+TEST(RegionSpectra, ALargeSurfaceDecimatedOnceFirstKeepsItsSpectra) {
+  const Mesh bunny =
+      subdivide_mesh(load_mesh(test::embedded_dataset_dir() / "bunny.off").components.front(), 1).mesh;  // 7,352 vertices
+  ASSERT_LT(bunny.num_vertices(), SpectraOptions{}.fine_vertices);
+  SpectraOptions options;
+  options.fine_vertices = 4000;
+  const SpectraSurface surface = spectra_surface(bunny, options);
+  ASSERT_TRUE(surface.decimated);
+  EXPECT_NEAR(surface.mesh.num_vertices(), options.fine_vertices, 0.25 * options.fine_vertices);
+  EXPECT_EQ(surface.input_vertices, bunny.num_vertices());
+  std::vector<Index> seen = surface.original_vertex;
+  std::sort(seen.begin(), seen.end());
+  EXPECT_TRUE(std::adjacent_find(seen.begin(), seen.end()) == seen.end());
+  EXPECT_TRUE(seen.front() >= 0 && seen.back() < bunny.num_vertices());
+  const double middle = 0.5 * (bunny.vertices.col(1).minCoeff() + bunny.vertices.col(1).maxCoeff());
+  std::vector<Index> label(static_cast<std::size_t>(bunny.num_vertices()));
+  for (Index v = 0; v < bunny.num_vertices(); ++v) label[static_cast<std::size_t>(v)] = bunny.vertices(v, 1) >= middle;
+  const SurfaceSpectra direct = surface_spectra(bunny, label, 2);
+  const SurfaceSpectra staged = surface_spectra(bunny, surface, label, 2, options);
+  double largest = 0.0;
+  for (std::size_t k = 0; k < direct.global.size(); ++k)
+    largest = std::max(largest, std::abs(staged.global[k] - direct.global[k]));
+  for (std::size_t k = 0; k < direct.region.size(); ++k)
+    largest = std::max(largest, std::abs(staged.region[k] - direct.region[k]));
+  EXPECT_GT(direct.region[0], 0.0);
+  EXPECT_LT(largest, 0.01);
+  // A surface prepared for another mesh is refused.
+  const Mesh other = make_icosphere(3);
+  EXPECT_THROW(surface_spectra(other, surface, std::vector<Index>(static_cast<std::size_t>(other.num_vertices()), 0), 1,
+                               options),
+               InvalidArgument);
 }
 
 // A bearing (SHREC07 349, a mechanical part with a symmetry axis and flat
@@ -143,6 +187,9 @@ TEST(RegionSpectra, SmallRegionsGetZerosAndBadInputIsRefused) {
   EXPECT_THROW(surface_spectra(sphere, label, 2, bad), InvalidArgument);
   bad = {};
   bad.min_region_area = 1.5;
+  EXPECT_THROW(surface_spectra(sphere, label, 2, bad), InvalidArgument);
+  bad = {};
+  bad.fine_vertices = bad.coarse_vertices - 1;
   EXPECT_THROW(surface_spectra(sphere, label, 2, bad), InvalidArgument);
   bad = {};
   bad.min_axis_gap = -0.1;

@@ -7,6 +7,7 @@
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -40,6 +41,7 @@ TEST(AnalyzeMesh, CanStopAfterTheQuotientFunction) {
   const MeshAnalysis a = analyze_mesh(make_icosphere(2), options);
   EXPECT_TRUE(a.reeb.nodes.empty());
   EXPECT_EQ(a.timings.reeb, 0.0);
+  EXPECT_EQ(a.spectra.mesh.num_vertices(), 0);  // no graph, no attributes to prepare for
   EXPECT_FALSE(a.fq.value.empty());
 }
 
@@ -74,6 +76,34 @@ TEST(AnalyzeMesh, IdenticalGraphUnderSimilarityTransforms) {
   expect_similarity_invariant(make_star(star));
   expect_similarity_invariant(load_mesh(test::embedded_dataset_dir() / "bunny.off").components.front());
   expect_similarity_invariant(load_mesh(test::embedded_dataset_dir() / "elk.off").components.front());
+}
+
+// The graph and the spectra's surface are prepared on two threads where
+// two are free: one thread or two give the same analysis and attributes, and
+// the surface prepared alongside gives the attributes computed without it.
+TEST(AnalyzeMesh, OneThreadOrTwoGiveTheSameGraphAndAttributes) {
+  const Mesh bunny = load_mesh(test::embedded_dataset_dir() / "bunny.off").components.front();
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const MeshAnalysis serial = analyze_mesh(bunny);
+  const GraphAttributes serial_attributes = compute_attributes(serial);
+  omp_set_num_threads(2);
+  const MeshAnalysis parallel = analyze_mesh(bunny);
+  const GraphAttributes parallel_attributes = compute_attributes(parallel);
+  omp_set_num_threads(threads);
+  EXPECT_EQ(parallel.features.vertices, serial.features.vertices);
+  EXPECT_EQ(parallel.fq.value, serial.fq.value);
+  EXPECT_EQ(parallel.reeb.edges, serial.reeb.edges);
+  EXPECT_EQ(parallel.reeb.vertex_node, serial.reeb.vertex_node);
+  EXPECT_EQ(parallel.spectra.original_vertex, serial.spectra.original_vertex);
+  EXPECT_EQ(parallel_attributes.node, serial_attributes.node);
+  EXPECT_EQ(parallel_attributes.edge, serial_attributes.edge);
+  EXPECT_EQ(parallel_attributes.signature, serial_attributes.signature);
+  EXPECT_GT(serial.timings.spectra_surface, 0.0);
+  const GraphAttributes unprepared = compute_attributes(serial.mesh, serial.graph, serial.fq.value, serial.features,
+                                                        serial.reeb);  // prepares its own surface
+  EXPECT_EQ(unprepared.node, serial_attributes.node);
+  EXPECT_EQ(unprepared.signature, serial_attributes.signature);
 }
 
 TEST(AnalyzeMesh, RejectsADisconnectedMesh) {

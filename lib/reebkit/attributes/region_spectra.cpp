@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <string>
 
 namespace reebkit {
@@ -68,44 +69,113 @@ Mesh largest_piece(const Mesh& part) {
   return submesh(part, kept, renumber);
 }
 
-}  // namespace
-
-SurfaceSpectra surface_spectra(const Mesh& mesh, const std::vector<Index>& vertex_region, Index regions,
-                               const SpectraOptions& options) {
-  const std::string where = mesh.source.empty() ? std::string("mesh in memory") : mesh.source;
-  if (vertex_region.size() != at(mesh.num_vertices()))
-    throw InvalidArgument("surface_spectra: " + where + ": " + std::to_string(vertex_region.size()) +
-                          " region labels for " + std::to_string(mesh.num_vertices()) + " vertices");
-  for (const Index r : vertex_region)
-    if (r < 0 || r >= regions)
-      throw InvalidArgument("surface_spectra: " + where + ": region label " + std::to_string(r) + " outside [0, " +
-                            std::to_string(regions) + ")");
-  if (options.coarse_vertices < 100 || !(options.min_region_area >= 0.0 && options.min_region_area <= 1.0) ||
+void check_options(const SpectraOptions& options) {
+  if (options.coarse_vertices < 100 || options.fine_vertices < options.coarse_vertices ||
+      !(options.min_region_area >= 0.0 && options.min_region_area <= 1.0) ||
       !(options.min_axis_gap >= 0.0 && options.min_axis_gap <= 1.0))
     throw InvalidArgument(
-        "surface_spectra: options out of range (coarse_vertices >= 100, min_region_area and min_axis_gap in [0, 1])");
-  // Everything below on the surface's canonical copy (mesh/transform.h):
-  // the decimation follows the frame, the rounding and the order of its
-  // input, the spectrum none of them, so similar copies of a surface get
-  // the same coarse copies and the same values.
-  const CanonicalCopy canonical = canonical_copy(mesh);
-  const Mesh& surface = canonical.mesh;
-  // Each region's triangles (those with at least two corners in it) and its
-  // share of the area.
-  std::vector<std::vector<Index>> region_triangles(at(regions));
-  std::vector<double> region_area(at(regions), 0.0);
-  double total_area = 0.0;
+        "surface_spectra: options out of range (coarse_vertices >= 100, fine_vertices >= coarse_vertices, "
+        "min_region_area and min_axis_gap in [0, 1])");
+}
+
+/// Adds each triangle of `surface` to the region of at least two of its
+/// corners (vertex v of `surface` is vertex original_vertex[v] of the input),
+/// and its area to that region's and to `total`; `triangles` may be null.
+void add_regions(const Mesh& surface, const std::vector<Index>* original_vertex,
+                 const std::vector<Index>& vertex_region, std::vector<std::vector<Index>>* triangles,
+                 std::vector<double>& area, double& total) {
   for (Index t = 0; t < surface.num_triangles(); ++t) {
-    const double area = triangle_area(surface, t);
-    total_area += area;
+    const double a = triangle_area(surface, t);
+    total += a;
     Index label[3];
-    for (int c = 0; c < 3; ++c) label[c] = vertex_region[at(canonical.original_vertex[at(surface.triangles(t, c))])];
+    for (int c = 0; c < 3; ++c) {
+      const Index v = surface.triangles(t, c);
+      label[c] = vertex_region[at(original_vertex ? (*original_vertex)[at(v)] : v)];
+    }
     const Index r = label[0] == label[1] || label[0] == label[2] ? label[0]
                     : label[1] == label[2]                       ? label[1]
                                                                  : kInvalidIndex;
     if (r == kInvalidIndex) continue;
-    region_triangles[at(r)].push_back(t);
-    region_area[at(r)] += area;
+    if (triangles) (*triangles)[at(r)].push_back(t);
+    area[at(r)] += a;
+  }
+}
+
+/// `m` decimated to `ratio` of its vertices (within `tolerance`); `m` itself
+/// where the decimation leaves a triangle it cannot repair or cuts `m` in two
+/// (a thin part collapsed: each further piece adds a zero eigenvalue).
+MeshVariant decimated_or_whole(const Mesh& m, double ratio, double tolerance) {
+  if (ratio < 1.0) try {
+      MeshVariant coarse = decimate_mesh(m, {ratio, tolerance});
+      if (connected_components(coarse.mesh.triangles, coarse.mesh.num_vertices()).count == 1) return coarse;
+    } catch (const InvalidMeshError&) {
+    }
+  MeshVariant whole;
+  whole.mesh = m;
+  whole.original_vertex.resize(at(m.num_vertices()));
+  std::iota(whole.original_vertex.begin(), whole.original_vertex.end(), Index{0});
+  return whole;
+}
+
+}  // namespace
+
+SpectraSurface spectra_surface(const Mesh& mesh, const SpectraOptions& options) {
+  check_options(options);
+  // Everything below on the surface's canonical copy (mesh/transform.h):
+  // the decimation follows the frame, the rounding and the order of its
+  // input, the spectrum none of them, so similar copies of a surface get
+  // the same coarse copies and the same values.
+  CanonicalCopy canonical = canonical_copy(mesh);
+  SpectraSurface out;
+  out.input_vertices = mesh.num_vertices();
+  out.axis_gap = canonical.axis_gap;
+  if (canonical.axis_gap >= options.min_axis_gap && mesh.num_vertices() > options.fine_vertices) {
+    // The size of this copy matters little (a loose tolerance: one try).
+    MeshVariant fine =
+        decimated_or_whole(canonical.mesh,
+                           static_cast<double>(options.fine_vertices) / static_cast<double>(mesh.num_vertices()), 0.25);
+    out.decimated = fine.mesh.num_vertices() < canonical.mesh.num_vertices();
+    out.mesh = std::move(fine.mesh);
+    for (const Index v : fine.original_vertex) out.original_vertex.push_back(canonical.original_vertex[at(v)]);
+  } else {
+    out.mesh = std::move(canonical.mesh);
+    out.original_vertex = std::move(canonical.original_vertex);
+  }
+  return out;
+}
+
+SurfaceSpectra surface_spectra(const Mesh& mesh, const std::vector<Index>& vertex_region, Index regions,
+                               const SpectraOptions& options) {
+  return surface_spectra(mesh, spectra_surface(mesh, options), vertex_region, regions, options);
+}
+
+SurfaceSpectra surface_spectra(const Mesh& mesh, const SpectraSurface& prepared,
+                               const std::vector<Index>& vertex_region, Index regions, const SpectraOptions& options) {
+  const std::string where = mesh.source.empty() ? std::string("mesh in memory") : mesh.source;
+  if (vertex_region.size() != at(mesh.num_vertices()))
+    throw InvalidArgument("surface_spectra: " + where + ": " + std::to_string(vertex_region.size()) +
+                          " region labels for " + std::to_string(mesh.num_vertices()) + " vertices");
+  if (prepared.input_vertices != mesh.num_vertices())
+    throw InvalidArgument("surface_spectra: " + where + ": a spectra surface of a mesh of " +
+                          std::to_string(prepared.input_vertices) + " vertices for one of " +
+                          std::to_string(mesh.num_vertices()));
+  for (const Index r : vertex_region)
+    if (r < 0 || r >= regions)
+      throw InvalidArgument("surface_spectra: " + where + ": region label " + std::to_string(r) + " outside [0, " +
+                            std::to_string(regions) + ")");
+  check_options(options);
+  const Mesh& surface = prepared.mesh;
+  // Each region's triangles (those with at least two corners in it) and its
+  // share of the area, counted on the surface before any decimation, so that
+  // the decision below does not move with it.
+  std::vector<std::vector<Index>> region_triangles(at(regions));
+  std::vector<double> region_area(at(regions), 0.0);
+  double total_area = 0.0;
+  add_regions(surface, &prepared.original_vertex, vertex_region, &region_triangles, region_area, total_area);
+  if (prepared.decimated) {
+    region_area.assign(at(regions), 0.0);
+    total_area = 0.0;
+    add_regions(mesh, nullptr, vertex_region, nullptr, region_area, total_area);
   }
 
   // The coarse copy of a connected piece: decimated to about
@@ -114,21 +184,12 @@ SurfaceSpectra surface_spectra(const Mesh& mesh, const std::vector<Index>& verte
   // quadric collapse's choice between collapses of nearly equal cost, as on
   // the flat faces of a mechanical part, turns on a change of the last bit),
   // where the decimation leaves a triangle it cannot repair, or where it
-  // cuts the piece in two (a thin part collapsed: each further piece adds a
-  // zero eigenvalue): slower, not wrong.
+  // cuts the piece in two: slower, not wrong.
   const double ratio =
-      canonical.axis_gap < options.min_axis_gap
+      prepared.axis_gap < options.min_axis_gap
           ? 1.0
-          : std::min(1.0, static_cast<double>(options.coarse_vertices) / static_cast<double>(mesh.num_vertices()));
-  const auto coarsened = [ratio](const Mesh& m) {
-    if (ratio >= 1.0) return m;
-    try {
-      Mesh coarse = decimate_mesh(m, {ratio, 0.05}).mesh;
-      if (connected_components(coarse.triangles, coarse.num_vertices()).count == 1) return coarse;
-    } catch (const InvalidMeshError&) {
-    }
-    return m;
-  };
+          : std::min(1.0, static_cast<double>(options.coarse_vertices) / static_cast<double>(surface.num_vertices()));
+  const auto coarsened = [ratio](const Mesh& m) { return decimated_or_whole(m, ratio, 0.05).mesh; };
   const Mesh coarse = coarsened(surface);
 
   SurfaceSpectra out;

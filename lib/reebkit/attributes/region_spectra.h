@@ -20,7 +20,11 @@
 // SpectraOptions::coarse_vertices vertices (mesh/decimation.h), and on each
 // region cut from the surface and decimated at the same ratio: the lowest
 // eigenvalues describe the shape at the scale of its parts, which the coarse
-// copy keeps, and the solver's time grows with the vertex count. A
+// copy keeps, and the solver's time grows with the vertex count. A surface
+// of more than SpectraOptions::fine_vertices vertices is first decimated
+// once to about that many (spectra_surface), and the coarse copy and the
+// regions are taken from that: one decimation of the large surface instead
+// of one for it and one for its regions, each a pass over every vertex. A
 // decimation depends on the frame, the rounding and the vertex order of its
 // input, so it is done on the surface's canonical copy (canonical_copy,
 // mesh/transform.h), which similar copies share: the values are the same for
@@ -50,7 +54,33 @@ struct SpectraOptions {
   /// with it) gets zeros: too few coarse vertices to resolve its first
   /// eigenvalues (about coarse_vertices x share). In [0, 1].
   double min_region_area = 0.01;
+  /// A surface of more vertices is first decimated once to about this many
+  /// (spectra_surface), from which the coarse copies are taken. Far above
+  /// coarse_vertices, so that the regions' borders cut from it are finer
+  /// than an edge of their coarse copies. >= coarse_vertices.
+  Index fine_vertices = 120000;
 };
+
+/// The surface the spectra are computed on: the canonical copy of a mesh
+/// (canonical_copy, mesh/transform.h), decimated to about
+/// SpectraOptions::fine_vertices vertices where it has more and its frame is
+/// well-defined. It depends on the mesh alone, not on its Reeb graph, so it
+/// can be prepared while the graph is built (analyze_mesh).
+struct SpectraSurface {
+  Mesh mesh;
+  /// #V of `mesh`: the vertex of the input that vertex v is.
+  std::vector<Index> original_vertex;
+  /// #V of the input.
+  Index input_vertices = 0;
+  /// CanonicalCopy::axis_gap of the input.
+  double axis_gap = 0.0;
+  /// `mesh` is a decimation of the canonical copy (not the copy itself).
+  bool decimated = false;
+};
+
+/// The surface the spectra of `mesh` are computed on. Throws
+/// InvalidArgument for options out of range.
+SpectraSurface spectra_surface(const Mesh& mesh, const SpectraOptions& options = {});
 
 struct SurfaceSpectra {
   /// kGlobalSpectrumLength values s / (1 + s), s = lambda_k x area / (4 pi k),
@@ -63,7 +93,8 @@ struct SurfaceSpectra {
   std::vector<double> region;
 };
 
-/// The spectra of `mesh` (one connected surface) and of its regions:
+/// The spectra of `mesh` (one connected surface) and of its regions, computed
+/// on its spectra_surface:
 /// vertex v belongs to region vertex_region[v] in [0, regions). A triangle
 /// belongs to the region of at least two of its corners (none when all three
 /// differ). Throws InvalidArgument for a vertex_region of another size, a
@@ -72,5 +103,11 @@ struct SurfaceSpectra {
 /// is left at zeros.
 SurfaceSpectra surface_spectra(const Mesh& mesh, const std::vector<Index>& vertex_region, Index regions,
                                const SpectraOptions& options = {});
+
+/// The same on `surface`, the spectra_surface of `mesh` with the same
+/// options, prepared beforehand. Throws InvalidArgument as above, and for a
+/// surface of another vertex count.
+SurfaceSpectra surface_spectra(const Mesh& mesh, const SpectraSurface& surface, const std::vector<Index>& vertex_region,
+                               Index regions, const SpectraOptions& options = {});
 
 }  // namespace reebkit

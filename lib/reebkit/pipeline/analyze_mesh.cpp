@@ -3,6 +3,7 @@
 #include "reebkit/core/timer.h"
 
 #include <algorithm>
+#include <exception>
 #include <memory>
 
 namespace reebkit {
@@ -21,22 +22,49 @@ MeshAnalysis analyze_mesh(Mesh mesh, const AnalysisOptions& options) {
     a.graph = build_mesh_graph(a.mesh);
   }
   a.timings.graph = timer.lap();
-  {  // one solver for the feature points and f_q, freed before the Reeb graph
-    const std::unique_ptr<GeodesicSolver> solver = make_geodesic_solver(a.graph, options.features.geodesic);
-    a.features = extract_feature_points(a.graph, options.features, *solver);
-    a.timings.features = timer.lap();
-    a.fq = quotient_function(*solver, a.features.vertices);
-    a.timings.quotient = timer.lap();
+  // Two independent parts, each on its own thread where one is free: the
+  // graph (feature points, f_q, Reeb graph) and the spectra's surface. An
+  // exception may not leave an OpenMP section: each keeps its own, and the
+  // graph's is thrown first.
+  std::exception_ptr failed[2];
+#pragma omp parallel sections num_threads(2)
+  {
+#pragma omp section
+    try {
+      Timer steps;
+      {  // one solver for the feature points and f_q, freed before the Reeb graph
+        const std::unique_ptr<GeodesicSolver> solver = make_geodesic_solver(a.graph, options.features.geodesic);
+        a.features = extract_feature_points(a.graph, options.features, *solver);
+        a.timings.features = steps.lap();
+        a.fq = quotient_function(*solver, a.features.vertices);
+        a.timings.quotient = steps.lap();
+      }
+      if (options.reeb_graph) {
+        a.reeb = build_reeb_graph(a.mesh, a.graph, a.fq.value, options.reeb);
+        a.timings.reeb = steps.lap();
+      }
+    } catch (...) {
+      failed[0] = std::current_exception();
+    }
+#pragma omp section
+    try {
+      if (options.reeb_graph) {
+        Timer steps;
+        a.spectra = spectra_surface(a.mesh);
+        a.timings.spectra_surface = steps.lap();
+      }
+    } catch (...) {
+      failed[1] = std::current_exception();
+    }
   }
-  if (options.reeb_graph) {
-    a.reeb = build_reeb_graph(a.mesh, a.graph, a.fq.value, options.reeb);
-    a.timings.reeb = timer.lap();
-  }
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);
   return a;
 }
 
 GraphAttributes compute_attributes(const MeshAnalysis& analysis) {
-  return compute_attributes(analysis.mesh, analysis.graph, analysis.fq.value, analysis.features, analysis.reeb);
+  return compute_attributes(analysis.mesh, analysis.graph, analysis.fq.value, analysis.features, analysis.reeb,
+                            &analysis.spectra);
 }
 
 }  // namespace reebkit

@@ -28,6 +28,9 @@ struct AnalysisTimings {
   double features = 0;  ///< extract_feature_points
   double quotient = 0;  ///< quotient_function
   double reeb = 0;      ///< build_reeb_graph (0 when not built)
+  /// spectra_surface (region_spectra.h), for the attributes: run alongside
+  /// features .. Reeb graph where a second thread is free, so not in total().
+  double spectra_surface = 0;
   double total() const { return graph + features + quotient + reeb; }
 };
 
@@ -38,11 +41,17 @@ struct MeshAnalysis {
   FeaturePoints features;
   QuotientFunction fq;
   ReebGraph reeb;  ///< empty when options.reeb_graph is false
+  /// The surface the attributes' spectra are computed on (spectra_surface,
+  /// region_spectra.h); empty when options.reeb_graph is false.
+  SpectraSurface spectra;
   AnalysisTimings timings;
 };
 
-/// Runs the pipeline on a cleaned, connected mesh (see load_mesh).
-/// Throws InvalidArgument when the mesh graph is not connected.
+/// Runs the pipeline on a cleaned, connected mesh (see load_mesh). With a
+/// Reeb graph, the surface of the attributes' spectra is prepared on a
+/// second OpenMP thread while the feature points, f_q and the graph are
+/// computed (on one thread inside a parallel region, e.g. reeb index's
+/// workers). Throws InvalidArgument when the mesh graph is not connected.
 MeshAnalysis analyze_mesh(Mesh mesh, const AnalysisOptions& options = {});
 
 /// The attributes of the analysis's Reeb graph (graph_attributes.h).
