@@ -22,7 +22,7 @@ work=$build/bench_graph
 mesh=$work/bunny_x4.off
 mkdir -p "$work"
 [ -s "$mesh" ] || "$reeb" perturb "$root/datasets/bunny.off" -o "$mesh" --subdivide 4 >/dev/null
-echo "mesh: $mesh ($(sed -n 2p "$mesh" | awk '{print $2}') faces, $(stat -c %s "$mesh") bytes); load: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "mesh: $mesh ($(sed -n 2p "$mesh" | awk '{print $2}') faces, $(stat -L -c %s "$mesh") bytes); load: $(cut -d' ' -f1-3 /proc/loadavg)"
 for threads in 1 2; do
   times=()
   for ((k = 0; k < runs; ++k)); do
