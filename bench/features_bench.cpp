@@ -105,13 +105,19 @@ void run_features(benchmark::State& state, const Case& c, Geodesic method = Geod
   options.geodesic = method;
   options.min_persistence = min_persistence;
   std::size_t count = 0;
+  int passes = 0;
   for (auto _ : state) {
     const FeaturePoints fp = extract_feature_points(c.graph, options);
     const QuotientFunction fq = quotient_function(c.graph, fp.vertices, method);
     benchmark::DoNotOptimize(fq.value.data());
     count = fp.vertices.size();
+    passes = fp.sweeps + 1;
   }
   state.counters["feature_points"] = static_cast<double>(count);
+  // Full single-source passes: the diameter ends' sweeps (Dijkstra's search,
+  // then f1, f2 and the extra sweeps) and f_q's multi-source pass; the
+  // epsilon balls, restricted to epsilon x diameter, are not counted.
+  state.counters["full_passes"] = passes;
   report_size(state, c);
 }
 
