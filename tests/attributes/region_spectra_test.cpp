@@ -39,7 +39,7 @@ std::vector<Index> labels_by_height(const Mesh& mesh, double level = 0.0) {
 /// The largest difference between the spectra of `mesh` and those of three
 /// random similar copies with their vertices renumbered.
 double largest_change_under_similarity(const Mesh& mesh, const std::vector<Index>& label, Index regions,
-                                        const SpectraOptions& options = {}) {
+                                       const SpectraOptions& options = {}) {
   const SurfaceSpectra before = surface_spectra(mesh, label, regions, options);
   std::mt19937_64 rng(7);
   double largest = 0.0;
@@ -122,8 +122,8 @@ TEST(RegionSpectra, SimilarityAndRenumberingLeaveTheSpectraUnchanged) {
 // those of the surface (the bunny's subdivided once, its regions cut at
 // mid-height).
 TEST(RegionSpectra, ALargeSurfaceDecimatedOnceFirstKeepsItsSpectra) {
-  const Mesh bunny =
-      subdivide_mesh(load_mesh(test::embedded_dataset_dir() / "bunny.off").components.front(), 1).mesh;  // 7,352 vertices
+  const Mesh bunny = subdivide_mesh(load_mesh(test::embedded_dataset_dir() / "bunny.off").components.front(), 1)
+                         .mesh;  // 7,352 vertices
   ASSERT_LT(bunny.num_vertices(), SpectraOptions{}.fine_vertices);
   SpectraOptions options;
   options.fine_vertices = 4000;
