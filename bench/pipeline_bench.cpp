@@ -1,5 +1,7 @@
 // The whole per-mesh pipeline (mesh graph + feature points + f_q + Reeb
-// graph; file parsing excluded): time, growth with mesh size, peak memory.
+// graph; file parsing excluded, and the attributes' spectra surface, which
+// analyze_mesh prepares beside it, left out): time, growth with mesh size,
+// peak memory.
 //
 //   build/bench/pipeline_bench [--geodesic fmm|dijkstra] [--level-lines contour|paper]
 //
@@ -72,7 +74,11 @@ struct Measurement {
   std::size_t nodes = 0;
 };
 
-AnalysisOptions g_options;  // --geodesic and --level-lines set the analysis
+AnalysisOptions g_options = [] {  // --geodesic and --level-lines set the analysis
+  AnalysisOptions options;
+  options.spectra_surface = false;  // the graph alone
+  return options;
+}();
 
 Measurement measure(const std::string& name, const Mesh& mesh) {
   Measurement m;

@@ -104,6 +104,13 @@ TEST(AnalyzeMesh, OneThreadOrTwoGiveTheSameGraphAndAttributes) {
                                                         serial.reeb);  // prepares its own surface
   EXPECT_EQ(unprepared.node, serial_attributes.node);
   EXPECT_EQ(unprepared.signature, serial_attributes.signature);
+  // Or the analysis leaves it to compute_attributes.
+  AnalysisOptions graph_alone;
+  graph_alone.spectra_surface = false;
+  const MeshAnalysis bare = analyze_mesh(bunny, graph_alone);
+  EXPECT_EQ(bare.spectra.mesh.num_vertices(), 0);
+  EXPECT_EQ(bare.timings.spectra_surface, 0.0);
+  EXPECT_EQ(compute_attributes(bare).signature, serial_attributes.signature);
 }
 
 TEST(AnalyzeMesh, RejectsADisconnectedMesh) {

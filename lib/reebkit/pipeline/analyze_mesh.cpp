@@ -48,7 +48,7 @@ MeshAnalysis analyze_mesh(Mesh mesh, const AnalysisOptions& options) {
     }
 #pragma omp section
     try {
-      if (options.reeb_graph) {
+      if (options.reeb_graph && options.spectra_surface) {
         Timer steps;
         a.spectra = spectra_surface(a.mesh);
         a.timings.spectra_surface = steps.lap();
@@ -63,8 +63,9 @@ MeshAnalysis analyze_mesh(Mesh mesh, const AnalysisOptions& options) {
 }
 
 GraphAttributes compute_attributes(const MeshAnalysis& analysis) {
+  const bool prepared = analysis.spectra.mesh.num_vertices() > 0;
   return compute_attributes(analysis.mesh, analysis.graph, analysis.fq.value, analysis.features, analysis.reeb,
-                            &analysis.spectra);
+                            prepared ? &analysis.spectra : nullptr);
 }
 
 }  // namespace reebkit

@@ -20,6 +20,11 @@ struct AnalysisOptions {
   FeatureOptions features;  ///< feature point extraction (epsilon, start vertex, ...)
   ReebOptions reeb;         ///< Reeb graph construction
   bool reeb_graph = true;   ///< false: stop after f_q (no Reeb graph)
+  /// With a Reeb graph, also prepare the surface the attributes' spectra are
+  /// computed on (MeshAnalysis::spectra), beside the graph on a second
+  /// thread where one is free; compute_attributes reuses it. false: the
+  /// analysis is the graph alone, and compute_attributes prepares it.
+  bool spectra_surface = true;
 };
 
 /// Wall-clock milliseconds of each step (file reading excluded).
@@ -42,16 +47,18 @@ struct MeshAnalysis {
   QuotientFunction fq;
   ReebGraph reeb;  ///< empty when options.reeb_graph is false
   /// The surface the attributes' spectra are computed on (spectra_surface,
-  /// region_spectra.h); empty when options.reeb_graph is false.
+  /// region_spectra.h); empty unless options.reeb_graph and
+  /// options.spectra_surface.
   SpectraSurface spectra;
   AnalysisTimings timings;
 };
 
 /// Runs the pipeline on a cleaned, connected mesh (see load_mesh). With a
-/// Reeb graph, the surface of the attributes' spectra is prepared on a
-/// second OpenMP thread while the feature points, f_q and the graph are
-/// computed (on one thread inside a parallel region, e.g. reeb index's
-/// workers). Throws InvalidArgument when the mesh graph is not connected.
+/// Reeb graph (and options.spectra_surface), the surface of the attributes'
+/// spectra is prepared on a second OpenMP thread while the feature points,
+/// f_q and the graph are computed (on one thread inside a parallel region,
+/// e.g. reeb index's workers). Throws InvalidArgument when the mesh graph is
+/// not connected.
 MeshAnalysis analyze_mesh(Mesh mesh, const AnalysisOptions& options = {});
 
 /// The attributes of the analysis's Reeb graph (graph_attributes.h).
