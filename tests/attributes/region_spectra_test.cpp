@@ -113,7 +113,7 @@ TEST(RegionSpectra, SimilarityAndRenumberingLeaveTheSpectraUnchanged) {
   // Also where the surface is first decimated to a finer copy (a large mesh).
   SpectraOptions fine;
   fine.fine_vertices = star.num_vertices() / 2;
-  ASSERT_TRUE(spectra_surface(star, fine).decimated);
+  ASSERT_TRUE(spectra_surface(star, fine).decimated());
   EXPECT_LT(largest_change_under_similarity(star, labels_by_height(star), 2, fine), 1e-6);
 }
 
@@ -128,7 +128,7 @@ TEST(RegionSpectra, ALargeSurfaceDecimatedOnceFirstKeepsItsSpectra) {
   SpectraOptions options;
   options.fine_vertices = 4000;
   const SpectraSurface surface = spectra_surface(bunny, options);
-  ASSERT_TRUE(surface.decimated);
+  ASSERT_TRUE(surface.decimated());
   EXPECT_NEAR(surface.mesh.num_vertices(), options.fine_vertices, 0.25 * options.fine_vertices);
   EXPECT_EQ(surface.input_vertices, bunny.num_vertices());
   std::vector<Index> seen = surface.original_vertex;

@@ -59,6 +59,7 @@
 
 #include "reebkit/attributes/region_spectra.h"
 #include "reebkit/core/error.h"
+#include "reebkit/core/parallel.h"
 #include "reebkit/geodesic/geodesic_solver.h"
 #include "reebkit/mesh/hole_filling.h"
 #include "reebkit/mesh/surface_sampling.h"
@@ -67,7 +68,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
 #include <functional>
 #include <memory>
 #include <string>
@@ -408,35 +408,22 @@ GraphAttributes compute_attributes(const Mesh& mesh, const MeshGraph& graph, con
                           "vertex count");
 
   const Index original_vertices = original_vertex_count(mesh);
-  // Two independent parts, each on its own thread where one is free (see
-  // analyze_mesh): the spectra, and the sums, geodesics and shape
-  // distributions. An exception may not leave an OpenMP section.
+  // The spectra beside the sums, geodesics and shape distributions.
   TriangleSums sums;
   RegionGeodesics regions;
   std::array<double, kGlobalShapeBins> global_shape{};
   std::vector<double> shape;
   SurfaceSpectra spectra;
-  std::exception_ptr failed[2];
-#pragma omp parallel sections num_threads(2)
-  {
-#pragma omp section
-    try {
-      spectra = spectra_surface ? surface_spectra(mesh, *spectra_surface, reeb.vertex_node, reeb.num_nodes())
-                                : surface_spectra(mesh, reeb.vertex_node, reeb.num_nodes());
-    } catch (...) {
-      failed[0] = std::current_exception();
-    }
-#pragma omp section
-    try {
-      sums = triangle_sums(mesh, original_vertices, f, reeb);
-      regions = region_geodesics(graph, features.geodesic, f, reeb, sums.vertex_area, sums.node_area);
-      shape = shape_histograms(mesh, original_vertices, reeb, global_shape.data());
-    } catch (...) {
-      failed[1] = std::current_exception();
-    }
-  }
-  for (const std::exception_ptr& e : failed)
-    if (e) std::rethrow_exception(e);
+  run_side_by_side(
+      [&] {
+        spectra = spectra_surface ? surface_spectra(mesh, *spectra_surface, reeb.vertex_node, reeb.num_nodes())
+                                  : surface_spectra(mesh, reeb.vertex_node, reeb.num_nodes());
+      },
+      [&] {
+        sums = triangle_sums(mesh, original_vertices, f, reeb);
+        regions = region_geodesics(graph, features.geodesic, f, reeb, sums.vertex_area, sums.node_area);
+        shape = shape_histograms(mesh, original_vertices, reeb, global_shape.data());
+      });
   const double length_unit = sums.total_area > 0.0 ? std::sqrt(sums.total_area) : 1.0;
   const double diameter = geodesic_diameter > 0.0 ? geodesic_diameter : 1.0;
   const auto relative = [](double value, double whole) { return whole > 0.0 ? value / whole : 0.0; };

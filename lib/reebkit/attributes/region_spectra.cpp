@@ -78,27 +78,12 @@ void check_options(const SpectraOptions& options) {
         "min_region_area and min_axis_gap in [0, 1])");
 }
 
-/// Adds each triangle of `surface` to the region of at least two of its
-/// corners (vertex v of `surface` is vertex original_vertex[v] of the input),
-/// and its area to that region's and to `total`; `triangles` may be null.
-void add_regions(const Mesh& surface, const std::vector<Index>* original_vertex,
-                 const std::vector<Index>& vertex_region, std::vector<std::vector<Index>>* triangles,
-                 std::vector<double>& area, double& total) {
-  for (Index t = 0; t < surface.num_triangles(); ++t) {
-    const double a = triangle_area(surface, t);
-    total += a;
-    Index label[3];
-    for (int c = 0; c < 3; ++c) {
-      const Index v = surface.triangles(t, c);
-      label[c] = vertex_region[at(original_vertex ? (*original_vertex)[at(v)] : v)];
-    }
-    const Index r = label[0] == label[1] || label[0] == label[2] ? label[0]
-                    : label[1] == label[2]                       ? label[1]
-                                                                 : kInvalidIndex;
-    if (r == kInvalidIndex) continue;
-    if (triangles) (*triangles)[at(r)].push_back(t);
-    area[at(r)] += a;
-  }
+/// The region of triangle t of `mesh`: that of at least two of its corners
+/// (vertex v in region label[v]), kInvalidIndex when all three differ.
+Index triangle_region(const Mesh& mesh, const std::vector<Index>& label, Index t) {
+  const Index a = label[at(mesh.triangles(t, 0))], b = label[at(mesh.triangles(t, 1))],
+              c = label[at(mesh.triangles(t, 2))];
+  return a == b || a == c ? a : b == c ? b : kInvalidIndex;
 }
 
 /// `m` decimated to `ratio` of its vertices (within `tolerance`); `m` itself
@@ -134,7 +119,6 @@ SpectraSurface spectra_surface(const Mesh& mesh, const SpectraOptions& options) 
     MeshVariant fine =
         decimated_or_whole(canonical.mesh,
                            static_cast<double>(options.fine_vertices) / static_cast<double>(mesh.num_vertices()), 0.25);
-    out.decimated = fine.mesh.num_vertices() < canonical.mesh.num_vertices();
     out.mesh = std::move(fine.mesh);
     for (const Index v : fine.original_vertex) out.original_vertex.push_back(canonical.original_vertex[at(v)]);
   } else {
@@ -168,14 +152,23 @@ SurfaceSpectra surface_spectra(const Mesh& mesh, const SpectraSurface& prepared,
   // Each region's triangles (those with at least two corners in it) and its
   // share of the area, counted on the surface before any decimation, so that
   // the decision below does not move with it.
+  std::vector<Index> surface_region(at(surface.num_vertices()));
+  for (Index v = 0; v < surface.num_vertices(); ++v)
+    surface_region[at(v)] = vertex_region[at(prepared.original_vertex[at(v)])];
   std::vector<std::vector<Index>> region_triangles(at(regions));
+  for (Index t = 0; t < surface.num_triangles(); ++t) {
+    const Index r = triangle_region(surface, surface_region, t);
+    if (r != kInvalidIndex) region_triangles[at(r)].push_back(t);
+  }
+  const Mesh& measured = prepared.decimated() ? mesh : surface;
+  const std::vector<Index>& measured_region = prepared.decimated() ? vertex_region : surface_region;
   std::vector<double> region_area(at(regions), 0.0);
   double total_area = 0.0;
-  add_regions(surface, &prepared.original_vertex, vertex_region, &region_triangles, region_area, total_area);
-  if (prepared.decimated) {
-    region_area.assign(at(regions), 0.0);
-    total_area = 0.0;
-    add_regions(mesh, nullptr, vertex_region, nullptr, region_area, total_area);
+  for (Index t = 0; t < measured.num_triangles(); ++t) {
+    const double area = triangle_area(measured, t);
+    total_area += area;
+    const Index r = triangle_region(measured, measured_region, t);
+    if (r != kInvalidIndex) region_area[at(r)] += area;
   }
 
   // The coarse copy of a connected piece: decimated to about

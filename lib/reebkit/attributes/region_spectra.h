@@ -75,7 +75,7 @@ struct SpectraSurface {
   /// CanonicalCopy::axis_gap of the input.
   double axis_gap = 0.0;
   /// `mesh` is a decimation of the canonical copy (not the copy itself).
-  bool decimated = false;
+  bool decimated() const { return mesh.num_vertices() < input_vertices; }
 };
 
 /// The surface the spectra of `mesh` are computed on. Throws

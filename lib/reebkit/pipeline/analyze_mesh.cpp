@@ -1,9 +1,9 @@
 #include "reebkit/pipeline/analyze_mesh.h"
 
+#include "reebkit/core/parallel.h"
 #include "reebkit/core/timer.h"
 
 #include <algorithm>
-#include <exception>
 #include <memory>
 
 namespace reebkit {
@@ -22,43 +22,27 @@ MeshAnalysis analyze_mesh(Mesh mesh, const AnalysisOptions& options) {
     a.graph = build_mesh_graph(a.mesh);
   }
   a.timings.graph = timer.lap();
-  // Two independent parts, each on its own thread where one is free: the
-  // graph (feature points, f_q, Reeb graph) and the spectra's surface. An
-  // exception may not leave an OpenMP section: each keeps its own, and the
-  // graph's is thrown first.
-  std::exception_ptr failed[2];
-#pragma omp parallel sections num_threads(2)
-  {
-#pragma omp section
-    try {
-      Timer steps;
-      {  // one solver for the feature points and f_q, freed before the Reeb graph
-        const std::unique_ptr<GeodesicSolver> solver = make_geodesic_solver(a.graph, options.features.geodesic);
-        a.features = extract_feature_points(a.graph, options.features, *solver);
-        a.timings.features = steps.lap();
-        a.fq = quotient_function(*solver, a.features.vertices);
-        a.timings.quotient = steps.lap();
-      }
-      if (options.reeb_graph) {
-        a.reeb = build_reeb_graph(a.mesh, a.graph, a.fq.value, options.reeb);
-        a.timings.reeb = steps.lap();
-      }
-    } catch (...) {
-      failed[0] = std::current_exception();
-    }
-#pragma omp section
-    try {
-      if (options.reeb_graph && options.spectra_surface) {
+  // The graph (feature points, f_q, Reeb graph) beside the spectra's surface.
+  run_side_by_side(
+      [&] {
+        {  // one solver for the feature points and f_q, freed before the Reeb graph
+          const std::unique_ptr<GeodesicSolver> solver = make_geodesic_solver(a.graph, options.features.geodesic);
+          a.features = extract_feature_points(a.graph, options.features, *solver);
+          a.timings.features = timer.lap();
+          a.fq = quotient_function(*solver, a.features.vertices);
+          a.timings.quotient = timer.lap();
+        }
+        if (options.reeb_graph) {
+          a.reeb = build_reeb_graph(a.mesh, a.graph, a.fq.value, options.reeb);
+          a.timings.reeb = timer.lap();
+        }
+      },
+      [&] {
+        if (!options.reeb_graph || !options.spectra_surface) return;
         Timer steps;
         a.spectra = spectra_surface(a.mesh);
         a.timings.spectra_surface = steps.lap();
-      }
-    } catch (...) {
-      failed[1] = std::current_exception();
-    }
-  }
-  for (const std::exception_ptr& e : failed)
-    if (e) std::rethrow_exception(e);
+      });
   return a;
 }
 
