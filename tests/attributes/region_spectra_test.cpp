@@ -2,6 +2,7 @@
 
 #include "reebkit/core/error.h"
 #include "reebkit/mesh/load_mesh.h"
+#include "reebkit/mesh/shape_dna.h"
 #include "reebkit/mesh/resampling.h"
 #include "reebkit/mesh/shapes.h"
 #include "reebkit/mesh/transform.h"
@@ -154,6 +155,36 @@ TEST(RegionSpectra, ALargeSurfaceDecimatedOnceFirstKeepsItsSpectra) {
                InvalidArgument);
 }
 
+// The whole surface's spectrum is computed on a copy of about
+// global_vertices vertices, finer than the regions': on the bunny subdivided
+// once it is nearer the spectrum of the surface itself than that of a copy
+// as coarse as the regions', and the regions' spectra do not depend on it.
+TEST(RegionSpectra, TheWholeSurfaceSpectrumComesFromAFinerCopy) {
+  const Mesh bunny = subdivide_mesh(load_mesh(test::embedded_dataset_dir() / "bunny.off").components.front(), 1)
+                         .mesh;  // 7,352 vertices
+  ShapeDnaOptions dna;
+  dna.eigenvalues = kGlobalSpectrumLength;
+  dna.margin = 4;
+  const std::vector<double> whole = shape_dna(canonical_copy(bunny).mesh, dna).eigenvalues;
+  const std::vector<Index> label = labels_by_height(bunny);
+  // The largest relative error of lambda_k x area against the whole surface's.
+  const auto error = [&](const SurfaceSpectra& s) {
+    double largest = 0.0;
+    for (std::size_t k = 0; k < whole.size(); ++k) {
+      const double lambda = unsquash(s.global[k]) * 4.0 * M_PI * static_cast<double>(k + 1);
+      largest = std::max(largest, std::abs(lambda / whole[k] - 1.0));
+    }
+    return largest;
+  };
+  SpectraOptions finer, as_coarse;
+  finer.global_vertices = bunny.num_vertices() / 2;
+  as_coarse.global_vertices = as_coarse.coarse_vertices;
+  const SurfaceSpectra fine = surface_spectra(bunny, label, 2, finer),
+                       coarse = surface_spectra(bunny, label, 2, as_coarse);
+  EXPECT_LT(error(fine), 0.75 * error(coarse)) << error(fine) << " against " << error(coarse);
+  EXPECT_EQ(fine.region, coarse.region);
+}
+
 // A bearing (SHREC07 349, a mechanical part with a symmetry axis and flat
 // faces) has ill-defined axes: its spectra are those of the surface itself,
 // unchanged by a similarity; its coarse copies would follow the rounding.
@@ -187,6 +218,9 @@ TEST(RegionSpectra, SmallRegionsGetZerosAndBadInputIsRefused) {
   EXPECT_THROW(surface_spectra(sphere, label, 2, bad), InvalidArgument);
   bad = {};
   bad.min_region_area = 1.5;
+  EXPECT_THROW(surface_spectra(sphere, label, 2, bad), InvalidArgument);
+  bad = {};
+  bad.global_vertices = bad.coarse_vertices - 1;
   EXPECT_THROW(surface_spectra(sphere, label, 2, bad), InvalidArgument);
   bad = {};
   bad.fine_vertices = bad.coarse_vertices - 1;

@@ -70,11 +70,13 @@ Mesh largest_piece(const Mesh& part) {
 }
 
 void check_options(const SpectraOptions& options) {
-  if (options.coarse_vertices < 100 || options.fine_vertices < options.coarse_vertices ||
+  if (options.coarse_vertices < 100 || options.global_vertices < options.coarse_vertices ||
+      options.fine_vertices < options.coarse_vertices ||
       !(options.min_region_area >= 0.0 && options.min_region_area <= 1.0) ||
       !(options.min_axis_gap >= 0.0 && options.min_axis_gap <= 1.0))
     throw InvalidArgument(
-        "surface_spectra: options out of range (coarse_vertices >= 100, fine_vertices >= coarse_vertices, "
+        "surface_spectra: options out of range (coarse_vertices >= 100, global_vertices and fine_vertices >= "
+        "coarse_vertices, "
         "min_region_area and min_axis_gap in [0, 1])");
 }
 
@@ -171,29 +173,31 @@ SurfaceSpectra surface_spectra(const Mesh& mesh, const SpectraSurface& prepared,
     if (r != kInvalidIndex) region_area[at(r)] += area;
   }
 
-  // The coarse copy of a connected piece: decimated to about
-  // coarse_vertices / #V of its vertices. The piece itself where the frame
-  // is ill-defined (its coarse copies would differ with the rounding: a
-  // quadric collapse's choice between collapses of nearly equal cost, as on
-  // the flat faces of a mechanical part, turns on a change of the last bit),
-  // where the decimation leaves a triangle it cannot repair, or where it
-  // cuts the piece in two: slower, not wrong.
-  const double ratio =
-      prepared.axis_gap < options.min_axis_gap
-          ? 1.0
-          : std::min(1.0, static_cast<double>(options.coarse_vertices) / static_cast<double>(surface.num_vertices()));
-  const auto coarsened = [ratio](const Mesh& m) { return decimated_or_whole(m, ratio, 0.05).mesh; };
-  const Mesh coarse = coarsened(surface);
+  // The coarse copy of a connected piece: decimated to about `vertices` /
+  // #V of its vertices. The piece itself where the frame is ill-defined (its
+  // coarse copies would differ with the rounding: a quadric collapse's choice
+  // between collapses of nearly equal cost, as on the flat faces of a
+  // mechanical part, turns on a change of the last bit), where the
+  // decimation leaves a triangle it cannot repair, or where it cuts the
+  // piece in two: slower, not wrong.
+  const auto ratio = [&](Index vertices) {
+    return prepared.axis_gap < options.min_axis_gap
+               ? 1.0
+               : std::min(1.0, static_cast<double>(vertices) / static_cast<double>(surface.num_vertices()));
+  };
+  const auto coarsened = [](const Mesh& m, double r) { return decimated_or_whole(m, r, 0.05).mesh; };
+  const double region_ratio = ratio(options.coarse_vertices);
+  const Mesh global_copy = coarsened(surface, ratio(options.global_vertices));
 
   SurfaceSpectra out;
   out.global.assign(at(kGlobalSpectrumLength), 0.0);
   ShapeDnaOptions global;
   global.eigenvalues = kGlobalSpectrumLength;
   global.margin = 4;
-  // The coarse copy; where the operator or the iterations cannot take it,
+  // The global copy; where the operator or the iterations cannot take it,
   // the surface itself; where they cannot take that either (a handful of
   // vertices), zeros, as for a region too small.
-  for (const Mesh* m : {&coarse, &surface}) {
+  for (const Mesh* m : {&global_copy, &surface}) {
     try {
       squash(shape_dna(*m, global), kGlobalSpectrumLength, out.global.data());
       break;
@@ -209,9 +213,9 @@ SurfaceSpectra surface_spectra(const Mesh& mesh, const SpectraSurface& prepared,
   local.margin = 2;  // a part of a shape has no symmetry to make its eigenvalues multiple
   for (Index r = 0; r < regions; ++r) {
     if (!(region_area[at(r)] >= options.min_region_area * total_area) || region_area[at(r)] == 0.0) continue;
-    // Cut from the surface before its decimation, then coarsened at the same ratio: a
+    // Cut from the surface before its decimation, then coarsened at the regions' ratio: a
     // border cut from the coarse copy would zig-zag with the collapses.
-    const Mesh part = coarsened(largest_piece(submesh(surface, region_triangles[at(r)], renumber)));
+    const Mesh part = coarsened(largest_piece(submesh(surface, region_triangles[at(r)], renumber)), region_ratio);
     if (part.num_vertices() < n + 2) continue;
     try {
       squash(shape_dna(part, local), n, out.region.data() + at(r) * at(n));

@@ -16,11 +16,14 @@
 // alike, and squashed into [0, 1) by x / (1 + x), the range the matcher and
 // the signature's nearest-neighbour search expect.
 //
-// Cost: the spectra are computed on a copy of the surface decimated to about
-// SpectraOptions::coarse_vertices vertices (mesh/decimation.h), and on each
-// region cut from the surface and decimated at the same ratio: the lowest
-// eigenvalues describe the shape at the scale of its parts, which the coarse
-// copy keeps, and the solver's time grows with the vertex count. A surface
+// Cost: the regions' spectra are computed on each region cut from the
+// surface and decimated to about SpectraOptions::coarse_vertices x its share
+// of the vertices (mesh/decimation.h): the lowest eigenvalues describe the
+// shape at the scale of its parts, which the coarse copy keeps, and the
+// solver's time grows with the vertex count. The whole surface's spectrum
+// is computed on a finer copy (SpectraOptions::global_vertices): it has to
+// tell apart people whose proportions differ by a few percent, within the
+// error of the linear elements on the coarse copy. A surface
 // of more than SpectraOptions::fine_vertices vertices is first decimated
 // once to about that many (spectra_surface), and the coarse copy and the
 // regions are taken from that: one decimation of the large surface instead
@@ -40,9 +43,16 @@
 namespace reebkit {
 
 struct SpectraOptions {
-  /// The surface is decimated to about this many vertices before its spectra
+  /// The regions are cut from the surface and decimated to about this many
+  /// vertices x their share of the surface's vertices before their spectra
   /// are computed (a smaller mesh is used as it is). >= 100.
   Index coarse_vertices = 1500;
+  /// The whole surface is decimated to about this many vertices before its
+  /// spectrum is computed (a smaller mesh is used as it is): finer than the
+  /// regions', since the relative error of the linear elements' eigenvalues
+  /// (about lambda h^2) is what separates one build of a body from another.
+  /// >= coarse_vertices.
+  Index global_vertices = 6000;
   /// The surface is used as it is, not decimated, when the gap between the
   /// second moments about its principal axes (CanonicalCopy::axis_gap,
   /// mesh/transform.h) is below this: its frame, hence its coarse copy,
@@ -57,7 +67,8 @@ struct SpectraOptions {
   /// A surface of more vertices is first decimated once to about this many
   /// (spectra_surface), from which the coarse copies are taken. Far above
   /// coarse_vertices, so that the regions' borders cut from it are finer
-  /// than an edge of their coarse copies. >= coarse_vertices.
+  /// than an edge of their coarse copies (the whole surface's spectrum is
+  /// then computed on it when global_vertices is larger). >= coarse_vertices.
   Index fine_vertices = 120000;
 };
 

@@ -28,8 +28,9 @@ namespace reebkit {
 /// spectra (node_attr 40 columns, signature 80). 7: the same columns; the
 /// default geodesic method fast marching, whose fields the attributes now
 /// use too (the main axis, the region extents), and similarity-invariant
-/// spectra.
-inline constexpr int kCollectionLayoutVersion = 7;
+/// spectra. 8: the same columns; the whole surface's spectrum (`dna_*`) on
+/// a finer copy (SpectraOptions::global_vertices).
+inline constexpr int kCollectionLayoutVersion = 8;
 
 /// Where the file came from: file attributes, and two groups.
 struct Provenance {
