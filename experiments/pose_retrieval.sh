@@ -24,21 +24,27 @@
 #    of the chest, torso) longer or thicker by factors drawn in FACTORS
 #    (default 1.05:1.15, i.e. 5-15 %), each person in POSES_PER_PERSON
 #    (default 10) of the 20 michael poses, drawn per person; class = person.
-#    Every mesh is then remeshed on its own like tosca-remeshed.
+#    Every mesh is then remeshed on its own like tosca-remeshed;
+#  - body-shape-wide: the same with other people (seed 7) whose parts differ
+#    by factors in WIDE_FACTORS (default 1.15:1.35, i.e. 15-35 %): people
+#    who differ as much as scanned people do, whose whole-surface spectra
+#    (Shape-DNA) tell them apart nearly always, where body-shape's barely
+#    differ.
 # Remeshing: N is drawn uniformly in [REMESH_MIN, REMESH_MAX] (default 8000,
 # 15000: the range of an independent collection of scanned bodies) and S is
 # the CRC (cksum) of the mesh name, N = REMESH_MIN + S mod the range width:
 # the same names give the same meshes on every run.
 #
 #   experiments/pose_retrieval.sh BUILD_DIR [REPORT_DIR]
-#   COLLECTIONS="tosca-remeshed body-shape" experiments/pose_retrieval.sh build
+#   COLLECTIONS="tosca-remeshed body-shape body-shape-wide" experiments/pose_retrieval.sh build
 #
 # BUILD_DIR: a build with the targets reeb and baselines (and body_shapes for
 # body-shape), and the datasets unpacked (ctest -R unpack_datasets).
-# COLLECTIONS (default all four) names the collections to build and
+# COLLECTIONS (default all five) names the collections to build and
 # evaluate; the others' files are left as they are. REPORT_DIR (default
 # results/pose/): one folder per collection, each with report.md, pr.csv,
-# pr.png, pr.svg (body-shape also people.txt: each person's changes and poses). The meshes, class files, collection files and distance
+# pr.png, pr.svg (the body-shape ones also people.txt: each person's changes
+# and poses). The meshes, class files, collection files and distance
 # matrices are derived from academic-use data: they stay in
 # BUILD_DIR/pose_retrieval/NAME/ and are never committed (the remeshed and
 # body-shape meshes in meshes/, the class file NAME.cla). THREADS (default 2)
@@ -46,22 +52,25 @@
 # baseline matrices of each collection whose last run completed and redoes
 # only reebkit's index, distances and report (about 25 s a collection): for
 # re-runs while reebkit's settings change (the generation settings POSES,
-# PEOPLE, POSES_PER_PERSON, FACTORS, REMESH_* then have no effect).
+# PEOPLE, POSES_PER_PERSON, FACTORS, WIDE_FACTORS, REMESH_* then have no
+# effect).
 # Time on 2 threads of a shared machine: tosca-remeshed about 5 min (86 s
-# remeshing), body-shape about 10 min (3 min making and remeshing the
-# people), the Shape-DNA baseline most of the rest (docs/results.md).
+# remeshing), body-shape and body-shape-wide about 3 min each (1 min making
+# and remeshing the people), the Shape-DNA baseline most of the rest
+# (docs/results.md).
 set -euo pipefail
 # shellcheck source=experiments/common.sh
 source "$(dirname "$0")/common.sh"
 
 experiment_arguments results/pose "$@"
 poses=${POSES:-1}
-collections=${COLLECTIONS:-tosca shrec07-pose tosca-remeshed body-shape}
+collections=${COLLECTIONS:-tosca shrec07-pose tosca-remeshed body-shape body-shape-wide}
 remesh_min=${REMESH_MIN:-8000}
 remesh_max=${REMESH_MAX:-15000}
 people=${PEOPLE:-10}
 poses_per_person=${POSES_PER_PERSON:-10}
 factors=${FACTORS:-1.05:1.15}
+wide_factors=${WIDE_FACTORS:-1.15:1.35}
 tosca=$build/data/tosca_dev
 shrec=$build/data/shrec07_watertight
 shrec_cla=$shrec/shrec07_watertight.cla
@@ -73,8 +82,8 @@ tosca_classes="cat centaur dog horse michael"
 for name in $collections; do
   case $name in
     tosca | shrec07-pose | tosca-remeshed) ;;
-    body-shape) require_built "$body_shapes" ;;
-    *) echo "$0: unknown collection '$name' in COLLECTIONS (tosca, shrec07-pose, tosca-remeshed, body-shape)" >&2
+    body-shape | body-shape-wide) require_built "$body_shapes" ;;
+    *) echo "$0: unknown collection '$name' in COLLECTIONS (tosca, shrec07-pose, tosca-remeshed, body-shape, body-shape-wide)" >&2
        exit 2 ;;
   esac
 done
@@ -155,12 +164,13 @@ remesh_each() {
   echo "$# meshes remeshed to $remesh_min-$remesh_max vertices in $dir/meshes"
 }
 
-# body_shape_collection: the people (full resolution, in people/, with
-# people.txt saying what each person's proportions are), remeshed.
+# body_shape_collection NAME FACTORS SEED: the people (full resolution, in
+# people/, with people.txt saying what each person's proportions are),
+# remeshed.
 body_shape_collection() {
-  local dir=$work/body-shape
-  "$body_shapes" "$tosca" "$dir/people" --people "$people" --poses "$poses_per_person" --factors "$factors" \
-    --cla "$dir/body-shape.cla"
+  local name=$1 dir=$work/$1
+  "$body_shapes" "$tosca" "$dir/people" --people "$people" --poses "$poses_per_person" --factors "$2" --seed "$3" \
+    --cla "$dir/$name.cla"
   remesh_each "$dir" "$dir"/people/*.ply
   rm "$dir"/people/*.ply
 }
@@ -188,7 +198,11 @@ for name in $collections; do
         tosca_classes_file "$work/tosca-remeshed/tosca-remeshed.cla"
         step "TOSCA, every pose remeshed" remesh_each "$work/tosca-remeshed" "$tosca"/*.off ;;
       body-shape)
-        step "$people people made from michael, $poses_per_person poses each, remeshed" body_shape_collection ;;
+        step "$people people made from michael, $poses_per_person poses each, remeshed" \
+          body_shape_collection body-shape "$factors" 1 ;;
+      body-shape-wide)
+        step "$people other people made from michael, parts $wide_factors, $poses_per_person poses each, remeshed" \
+          body_shape_collection body-shape-wide "$wide_factors" 7 ;;
     esac
   fi
   case $name in
@@ -199,9 +213,9 @@ for name in $collections; do
       evaluate shrec07-pose "$work/shrec07-pose/meshes" "$work/shrec07-pose/shrec07-pose.cla" ;;
     tosca-remeshed)
       evaluate tosca-remeshed "$work/tosca-remeshed/meshes" "$work/tosca-remeshed/tosca-remeshed.cla" ;;
-    body-shape)
-      evaluate body-shape "$work/body-shape/meshes" "$work/body-shape/body-shape.cla"
-      cp "$work/body-shape/people/people.txt" "$report/body-shape/people.txt" ;;
+    body-shape | body-shape-wide)
+      evaluate "$name" "$work/$name/meshes" "$work/$name/$name.cla"
+      cp "$work/$name/people/people.txt" "$report/$name/people.txt" ;;
   esac
   echo "report: $report/$name/report.md"
 done
