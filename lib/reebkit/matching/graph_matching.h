@@ -52,28 +52,29 @@ namespace reebkit {
 ///   near (two people, one body in two poses) while the graph ranks the
 ///   others (two classes differ in both; the graph tells which are nearer).
 /// Defaults: every term intrinsic (unchanged when the surface bends), the
-/// Euclidean ones h and g off, and h_g and g_g off too; the weights chosen on SHREC07 and the
-/// body-shape benchmark together, the demo's variants as guard, and reported
-/// on the TOSCA collections (results/matching_weights.md).
+/// Euclidean ones h and g off, and h_g off too; the weights chosen on
+/// SHREC07 and the two body-shape benchmarks together, the demo's variants
+/// as guard, and reported on the TOSCA collections and SHREC07 re-posed
+/// (results/matching_weights.md).
 struct MatchingOptions {
-  double attribute_weight = 4.0;        ///< weight of a(i, j)
+  double attribute_weight = 8.0;        ///< weight of a(i, j)
   double structure_weight = 1.0;        ///< weight of s(i, j)
   double edge_weight = 0.25;            ///< weight of e(i, j)
   double profile_weight = 16.0;         ///< weight of p(i, j)
   double shape_weight = 0.0;            ///< weight of h(i, j): Euclidean, follows the pose
   double geodesic_shape_weight = 0.0;   ///< weight of h_g(i, j)
   double global_shape_weight = 0.0;     ///< weight of g(A, B): Euclidean, follows the pose
-  double global_geodesic_weight = 0.0;  ///< weight of g_g(A, B)
-  double spectrum_weight = 4.0;         ///< weight of r(i, j)
-  double global_spectrum_weight = 8.0;  ///< weight of g_s(A, B)
+  double global_geodesic_weight = 0.8;  ///< weight of g_g(A, B)
+  double spectrum_weight = 8.0;         ///< weight of r(i, j)
+  double global_spectrum_weight = 16.0;  ///< weight of g_s(A, B)
   /// How many of the kGlobalSpectrumLength eigenvalues g_s compares (the
   /// lowest), in [1, kGlobalSpectrumLength]: the first ones carry the
   /// proportions of a shape, the later ones more of its details and of its
   /// triangulation.
-  int global_spectrum_eigenvalues = 8;
+  int global_spectrum_eigenvalues = 12;
   /// The root mean square log ratio d at which g_s is 1/2; > 0.
   double global_spectrum_scale = 0.005;
-  double unmatched_cost = 1.0;    ///< cost of deleting or inserting a node, per unit of node weight
+  double unmatched_cost = 1.5;    ///< cost of deleting or inserting a node, per unit of node weight
   double min_node_weight = 0.05;  ///< added to the relative area so that area-less nodes still count
   /// Rounds of edge-consistency refinement: the assignment is solved again
   /// with e(i, j) from the previous correspondence (the first solve has e =
