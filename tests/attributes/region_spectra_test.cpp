@@ -2,8 +2,8 @@
 
 #include "reebkit/core/error.h"
 #include "reebkit/mesh/load_mesh.h"
-#include "reebkit/mesh/shape_dna.h"
 #include "reebkit/mesh/resampling.h"
+#include "reebkit/mesh/shape_dna.h"
 #include "reebkit/mesh/shapes.h"
 #include "reebkit/mesh/transform.h"
 #include "support/test_support.h"

@@ -57,15 +57,15 @@ namespace reebkit {
 /// as guard, and reported on the TOSCA collections and SHREC07 re-posed
 /// (results/matching_weights.md).
 struct MatchingOptions {
-  double attribute_weight = 8.0;        ///< weight of a(i, j)
-  double structure_weight = 1.0;        ///< weight of s(i, j)
-  double edge_weight = 0.25;            ///< weight of e(i, j)
-  double profile_weight = 16.0;         ///< weight of p(i, j)
-  double shape_weight = 0.0;            ///< weight of h(i, j): Euclidean, follows the pose
-  double geodesic_shape_weight = 0.0;   ///< weight of h_g(i, j)
-  double global_shape_weight = 0.0;     ///< weight of g(A, B): Euclidean, follows the pose
-  double global_geodesic_weight = 0.8;  ///< weight of g_g(A, B)
-  double spectrum_weight = 8.0;         ///< weight of r(i, j)
+  double attribute_weight = 8.0;         ///< weight of a(i, j)
+  double structure_weight = 1.0;         ///< weight of s(i, j)
+  double edge_weight = 0.25;             ///< weight of e(i, j)
+  double profile_weight = 16.0;          ///< weight of p(i, j)
+  double shape_weight = 0.0;             ///< weight of h(i, j): Euclidean, follows the pose
+  double geodesic_shape_weight = 0.0;    ///< weight of h_g(i, j)
+  double global_shape_weight = 0.0;      ///< weight of g(A, B): Euclidean, follows the pose
+  double global_geodesic_weight = 0.8;   ///< weight of g_g(A, B)
+  double spectrum_weight = 8.0;          ///< weight of r(i, j)
   double global_spectrum_weight = 16.0;  ///< weight of g_s(A, B)
   /// How many of the kGlobalSpectrumLength eigenvalues g_s compares (the
   /// lowest), in [1, kGlobalSpectrumLength]: the first ones carry the
