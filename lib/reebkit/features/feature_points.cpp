@@ -42,6 +42,14 @@ Index grid_farthest(const std::vector<double>& f) {
   return v;
 }
 
+// What a call of find_diameter_ends must leave behind: each level is one
+// pass more (the pass from s1, then the pass from s2 and the extra sweeps).
+enum class Keep {
+  Start,   ///< s1 only
+  Length,  ///< s1, s2 and f1 (so length())
+  Fields,  ///< s1, s2, f1 and f2, the pair mutually farthest where the sweeps allow
+};
+
 // How find_diameter_ends starts and compares.
 struct Sweep {
   /// The seed is already an end (far from every end found so far): it is
@@ -50,10 +58,12 @@ struct Sweep {
   /// The farthest vertex of a pass is grid_farthest's, not the field's own
   /// (largest distance, then id).
   bool grid_ties = false;
+  Keep keep = Keep::Fields;
 };
 
 // Double sweep from `seed`, repeated (v_s1 <- v_s2, v_s2 <- farthest) until
-// the pair is mutually farthest or `max_extra_sweeps` more passes were spent.
+// the pair is mutually farthest or `max_extra_sweeps` more passes were spent;
+// passes that `how.keep` does not need are not run.
 DiameterEnds find_diameter_ends(GeodesicSolver& solver, Index seed, int max_extra_sweeps, Sweep how = {}) {
   DiameterEnds e;
   const DistanceField& field = solver.run({seed});
@@ -66,11 +76,13 @@ DiameterEnds find_diameter_ends(GeodesicSolver& solver, Index seed, int max_extr
   e.s1 = seed;
   if (!how.seed_is_end) {
     e.s1 = farthest();
+    if (how.keep == Keep::Start) return e;
     solver.run({e.s1});
     ++e.passes;
   }
   e.s2 = farthest();
   e.f1 = field.distance;
+  if (how.keep != Keep::Fields) return e;
   solver.run({e.s2});
   Index back = farthest();  // farthest from s2
   e.f2 = field.distance;
@@ -95,26 +107,38 @@ DiameterEnds find_diameter_ends(GeodesicSolver& solver, Index seed, int max_extr
 // far, from the distance fields the sweeps already computed) and keeps the
 // longest pair (ties: smaller ids), so a start vertex changes the result only
 // where it finds a longer diameter. `passes` of the result counts them all.
+// `fields`: the winner's f1 and f2 are wanted (else only its s1, and no
+// pass is run that neither the comparison nor the next seed reads).
 // `seeds_are_ends`: a farthest-point seed is taken as v_s1 (see
 // find_diameter_ends).
 DiameterEnds search_diameter_ends(GeodesicSolver& search, const FeatureOptions& options, int extra_sweeps,
-                                  bool seeds_are_ends) {
-  DiameterEnds ends = find_diameter_ends(search, kCanonicalSeed, extra_sweeps);
+                                  bool seeds_are_ends, bool fields) {
+  const bool from_start = options.start_vertex != kCanonicalSeed;
+  const bool compared = options.extra_seeds > 0 || from_start;
+  // A sweep's f2 is read by the result (fields) and by the choice of the
+  // next farthest-point seed; its length by the comparison.
+  const auto keep = [&](bool seed_follows) {
+    return fields || seed_follows ? Keep::Fields : compared ? Keep::Length : Keep::Start;
+  };
+  DiameterEnds ends =
+      find_diameter_ends(search, kCanonicalSeed, extra_sweeps, {false, false, keep(options.extra_seeds > 0)});
   int passes = ends.passes;
-  std::vector<double> to_ends(ends.f1.size(), std::numeric_limits<double>::infinity());
+  std::vector<double> to_ends;
   const auto add_ends = [&](const DiameterEnds& e) {
+    if (to_ends.empty()) to_ends.assign(e.f1.size(), std::numeric_limits<double>::infinity());
     for (std::size_t v = 0; v < to_ends.size(); ++v) to_ends[v] = std::min({to_ends[v], e.f1[v], e.f2[v]});
   };
-  const auto consider = [&](Index seed, bool seed_is_end) {
-    DiameterEnds other = find_diameter_ends(search, seed, extra_sweeps, {seed_is_end});
+  const auto consider = [&](Index seed, Sweep how) {
+    DiameterEnds other = find_diameter_ends(search, seed, extra_sweeps, how);
     passes += other.passes;
-    add_ends(other);
+    if (how.keep == Keep::Fields) add_ends(other);
     if (other.longer_than(ends)) ends = std::move(other);
   };
-  add_ends(ends);
+  if (options.extra_seeds > 0) add_ends(ends);
   for (int k = 0; k < options.extra_seeds; ++k)  // max_element: ties go to the smallest id
-    consider(static_cast<Index>(std::max_element(to_ends.begin(), to_ends.end()) - to_ends.begin()), seeds_are_ends);
-  if (options.start_vertex != kCanonicalSeed) consider(options.start_vertex, false);
+    consider(static_cast<Index>(std::max_element(to_ends.begin(), to_ends.end()) - to_ends.begin()),
+             {seeds_are_ends, false, keep(k + 1 < options.extra_seeds)});
+  if (from_start) consider(options.start_vertex, {false, false, keep(false)});
   ends.passes = passes;
   return ends;
 }
@@ -145,7 +169,7 @@ FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOption
   out.geodesic = options.geodesic;
   DiameterEnds ends;
   if (options.geodesic == Geodesic::Dijkstra) {
-    ends = search_diameter_ends(solver, options, options.max_extra_sweeps, false);
+    ends = search_diameter_ends(solver, options, options.max_extra_sweeps, false, true);
   } else {
     // The search runs Dijkstra passes (a farthest-point seed taken as an
     // end, no extra sweeps); its v_s1 then starts a sweep in the chosen
@@ -155,7 +179,7 @@ FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOption
     int search_passes = 0;
     {  // the search's fields are freed before the sweep
       DijkstraSolver search(graph);
-      const DiameterEnds found = search_diameter_ends(search, options, 0, true);
+      const DiameterEnds found = search_diameter_ends(search, options, 0, true, false);
       start = found.s1;
       search_passes = found.passes;
     }
