@@ -119,6 +119,22 @@ TEST(FeaturePoints, SingleArmShapeHasTwoEnds) {
   EXPECT_EQ(fp.vertices.size(), 2u);
 }
 
+// The passes the search spends (FeaturePoints::sweeps) on a shape whose
+// first sweep ends on a mutually farthest pair and whose farthest-point
+// seed leads to no longer diameter (one arm on a ball). Fast marching: a
+// Dijkstra pass from vertex 0 for v_s1, then f1 and f2, and the seed's own
+// pass. Dijkstra without seeds: vertex 0's double sweep, whose second and
+// third passes are f1 and f2.
+TEST(FeaturePoints, TheSearchSpendsOnlyThePassesItReads) {
+  const MeshGraph g = build_mesh_graph(make_star(star(1)));
+  FeatureOptions options;
+  EXPECT_EQ(extract_feature_points(g, options).sweeps, 1 + 2 + 1);
+  options.extra_seeds = 0;
+  EXPECT_EQ(extract_feature_points(g, options).sweeps, 1 + 2);
+  options.geodesic = Geodesic::Dijkstra;
+  EXPECT_EQ(extract_feature_points(g, options).sweeps, 3);
+}
+
 // Under either method, in its own metric; f1 and f2 are the fields from
 // the two ends.
 TEST(FeaturePoints, DiameterEndsAreMutuallyFarthestFeaturePoints) {

@@ -171,20 +171,40 @@ FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOption
   if (options.geodesic == Geodesic::Dijkstra) {
     ends = search_diameter_ends(solver, options, options.max_extra_sweeps, false, true);
   } else {
-    // The search runs Dijkstra passes (a farthest-point seed taken as an
-    // end, no extra sweeps); its v_s1 then starts a sweep in the chosen
-    // metric, with ties on the grid of the extrema below, so that the ends
-    // are extrema of f1 and f2 as they classify them.
+    // A Dijkstra pass from v_r (and from options.start_vertex) picks v_s1;
+    // the sweep then runs in the chosen metric, with ties on the grid of the
+    // extrema below, so that the ends are extrema of f1 and f2 as they
+    // classify them. The farthest-point seeds are tried in that metric too:
+    // a seed's own pass says whether it leads to a longer diameter, and only
+    // then is the sweep run from it.
     Index start = kInvalidIndex;
-    int search_passes = 0;
+    int passes = 0;
     {  // the search's fields are freed before the sweep
       DijkstraSolver search(graph);
-      const DiameterEnds found = search_diameter_ends(search, options, 0, true, false);
+      FeatureOptions first = options;
+      first.extra_seeds = 0;
+      const DiameterEnds found = search_diameter_ends(search, first, 0, true, false);
       start = found.s1;
-      search_passes = found.passes;
+      passes = found.passes;
     }
     ends = find_diameter_ends(solver, start, options.max_extra_sweeps, {true, true});
-    ends.passes += search_passes;
+    passes += ends.passes;
+    std::vector<double> to_ends(ends.f1.size());
+    for (std::size_t v = 0; v < to_ends.size(); ++v) to_ends[v] = std::min(ends.f1[v], ends.f2[v]);
+    for (int k = 0; k < options.extra_seeds; ++k) {
+      const Index seed = grid_farthest(to_ends);
+      DiameterEnds other = find_diameter_ends(solver, seed, 0, {true, true, Keep::Length});
+      passes += other.passes;
+      for (std::size_t v = 0; v < to_ends.size(); ++v) to_ends[v] = std::min(to_ends[v], other.f1[v]);
+      // Longer by more than the grid: a similar copy, whose lengths differ
+      // by rounding only, makes the same choice.
+      const double unit = kTieGrid * ends.length();
+      if (!(std::round(other.length() / unit) > std::round(ends.length() / unit))) continue;
+      ends = find_diameter_ends(solver, seed, options.max_extra_sweeps, {true, true});
+      passes += ends.passes;
+      for (std::size_t v = 0; v < to_ends.size(); ++v) to_ends[v] = std::min({to_ends[v], ends.f1[v], ends.f2[v]});
+    }
+    ends.passes = passes;
   }
   out.sweeps = ends.passes;
   const Index s1 = ends.s1, s2 = ends.s2;

@@ -27,7 +27,10 @@ struct FeatureOptions {
   /// pass is not always enough, so the default allows three.
   int max_extra_sweeps = 3;
   /// Further sweeps from farthest-point seeds (the vertex farthest from the
-  /// ends found so far), to find the true diameter more often.
+  /// ends found so far), to find the true diameter more often. Under
+  /// FastMarching a seed is tried in that metric after the first sweep: one
+  /// pass from it, and the sweep from it only where that pass finds a longer
+  /// diameter (docs/results.md, "Farthest-point seeds in the chosen metric").
   int extra_seeds = 1;
   /// How the geodesic distances of the step are computed: f1, f2 and the
   /// epsilon balls (analyze_mesh uses the same method for f_q and the
@@ -35,12 +38,11 @@ struct FeatureOptions {
   /// oscillates at the scale of the sampling and moves and adds extrema on a
   /// resampled or re-posed mesh; FastMarching (the default) crosses
   /// triangles and converges to the surface's distance (results/robustness/
-  /// report.md). The search for the diameter ends (eqs. 2-4), a search for
-  /// the farthest pair only, always runs Dijkstra passes; under FastMarching
-  /// it is lighter (a farthest-point seed is taken as v_s1, no extra
-  /// sweeps), and its v_s1 starts a sweep in the chosen metric: f1 from
-  /// v_s1, v_s2 farthest from v_s1 in it (eq. 4), f2 from v_s2, and up to
-  /// max_extra_sweeps more until the two are mutually farthest.
+  /// report.md). Under FastMarching v_s1 comes from one Dijkstra pass from
+  /// v_r (eq. 2) and starts a sweep in the chosen metric: f1 from v_s1, v_s2
+  /// farthest from v_s1 in it (eq. 4), f2 from v_s2, and up to
+  /// max_extra_sweeps more until the two are mutually farthest; then the
+  /// extra_seeds, in the same metric.
   Geodesic geodesic = Geodesic::FastMarching;
   /// Extrema of f1 and f2 whose topological persistence (features/
   /// persistence.h: how far f must change around one before it merges into a
