@@ -109,10 +109,8 @@ DiameterEnds find_diameter_ends(GeodesicSolver& solver, Index seed, int max_extr
 // where it finds a longer diameter. `passes` of the result counts them all.
 // `fields`: the winner's f1 and f2 are wanted (else only its s1, and no
 // pass is run that neither the comparison nor the next seed reads).
-// `seeds_are_ends`: a farthest-point seed is taken as v_s1 (see
-// find_diameter_ends).
 DiameterEnds search_diameter_ends(GeodesicSolver& search, const FeatureOptions& options, int extra_sweeps,
-                                  bool seeds_are_ends, bool fields) {
+                                  bool fields) {
   const bool from_start = options.start_vertex != kCanonicalSeed;
   const bool compared = options.extra_seeds > 0 || from_start;
   // A sweep's f2 is read by the result (fields) and by the choice of the
@@ -137,7 +135,7 @@ DiameterEnds search_diameter_ends(GeodesicSolver& search, const FeatureOptions& 
   if (options.extra_seeds > 0) add_ends(ends);
   for (int k = 0; k < options.extra_seeds; ++k)  // max_element: ties go to the smallest id
     consider(static_cast<Index>(std::max_element(to_ends.begin(), to_ends.end()) - to_ends.begin()),
-             {seeds_are_ends, false, keep(k + 1 < options.extra_seeds)});
+             {false, false, keep(k + 1 < options.extra_seeds)});
   if (from_start) consider(options.start_vertex, {false, false, keep(false)});
   ends.passes = passes;
   return ends;
@@ -169,7 +167,7 @@ FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOption
   out.geodesic = options.geodesic;
   DiameterEnds ends;
   if (options.geodesic == Geodesic::Dijkstra) {
-    ends = search_diameter_ends(solver, options, options.max_extra_sweeps, false, true);
+    ends = search_diameter_ends(solver, options, options.max_extra_sweeps, true);
   } else {
     // A Dijkstra pass from v_r (and from options.start_vertex) picks v_s1;
     // the sweep then runs in the chosen metric, with ties on the grid of the
@@ -183,7 +181,7 @@ FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOption
       DijkstraSolver search(graph);
       FeatureOptions first = options;
       first.extra_seeds = 0;
-      const DiameterEnds found = search_diameter_ends(search, first, 0, true, false);
+      const DiameterEnds found = search_diameter_ends(search, first, 0, false);
       start = found.s1;
       passes = found.passes;
     }
