@@ -31,6 +31,17 @@ struct DiameterEnds {
   }
 };
 
+// to_ends[v] <- the distance from v to the nearest end found so far, with
+// the ends of `e` (f2 absent when only its length was kept): the field whose
+// maximum is the next farthest-point seed.
+void add_ends(std::vector<double>& to_ends, const DiameterEnds& e) {
+  if (to_ends.empty()) to_ends.assign(e.f1.size(), std::numeric_limits<double>::infinity());
+  for (std::size_t v = 0; v < to_ends.size(); ++v) {
+    to_ends[v] = std::min(to_ends[v], e.f1[v]);
+    if (!e.f2.empty()) to_ends[v] = std::min(to_ends[v], e.f2[v]);
+  }
+}
+
 // The vertex of largest f counted in units of kTieGrid x max f, ties to the
 // larger id: the maximum of f as the extrema are classified below (sos_less
 // on the snapped field), whatever the rounding of a moved or scaled copy.
@@ -122,17 +133,13 @@ DiameterEnds search_diameter_ends(GeodesicSolver& search, const FeatureOptions& 
       find_diameter_ends(search, kCanonicalSeed, extra_sweeps, {false, false, keep(options.extra_seeds > 0)});
   int passes = ends.passes;
   std::vector<double> to_ends;
-  const auto add_ends = [&](const DiameterEnds& e) {
-    if (to_ends.empty()) to_ends.assign(e.f1.size(), std::numeric_limits<double>::infinity());
-    for (std::size_t v = 0; v < to_ends.size(); ++v) to_ends[v] = std::min({to_ends[v], e.f1[v], e.f2[v]});
-  };
   const auto consider = [&](Index seed, Sweep how) {
     DiameterEnds other = find_diameter_ends(search, seed, extra_sweeps, how);
     passes += other.passes;
-    if (how.keep == Keep::Fields) add_ends(other);
+    if (how.keep == Keep::Fields) add_ends(to_ends, other);
     if (other.longer_than(ends)) ends = std::move(other);
   };
-  if (options.extra_seeds > 0) add_ends(ends);
+  if (options.extra_seeds > 0) add_ends(to_ends, ends);
   for (int k = 0; k < options.extra_seeds; ++k)  // max_element: ties go to the smallest id
     consider(static_cast<Index>(std::max_element(to_ends.begin(), to_ends.end()) - to_ends.begin()),
              {false, false, keep(k + 1 < options.extra_seeds)});
@@ -187,20 +194,20 @@ FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOption
     }
     ends = find_diameter_ends(solver, start, options.max_extra_sweeps, {true, true});
     passes += ends.passes;
-    std::vector<double> to_ends(ends.f1.size());
-    for (std::size_t v = 0; v < to_ends.size(); ++v) to_ends[v] = std::min(ends.f1[v], ends.f2[v]);
+    std::vector<double> to_ends;
+    add_ends(to_ends, ends);
     for (int k = 0; k < options.extra_seeds; ++k) {
       const Index seed = grid_farthest(to_ends);
       DiameterEnds other = find_diameter_ends(solver, seed, 0, {true, true, Keep::Length});
       passes += other.passes;
-      for (std::size_t v = 0; v < to_ends.size(); ++v) to_ends[v] = std::min(to_ends[v], other.f1[v]);
+      add_ends(to_ends, other);
       // Longer by more than the grid: a similar copy, whose lengths differ
       // by rounding only, makes the same choice.
       const double unit = kTieGrid * ends.length();
       if (!(std::round(other.length() / unit) > std::round(ends.length() / unit))) continue;
       ends = find_diameter_ends(solver, seed, options.max_extra_sweeps, {true, true});
       passes += ends.passes;
-      for (std::size_t v = 0; v < to_ends.size(); ++v) to_ends[v] = std::min({to_ends[v], ends.f1[v], ends.f2[v]});
+      add_ends(to_ends, ends);
     }
     ends.passes = passes;
   }
