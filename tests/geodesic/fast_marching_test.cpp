@@ -130,10 +130,11 @@ TEST(FastMarching, SplitsObtuseCorners) {
   const Index centre = (n / 2) * (n + 1) + n / 2;
   const Errors fmm = errors(solver.run({centre}), centre, euclidean_from(mesh, centre), 0.2);
   const Errors edges = errors(dijkstra(g, centre), centre, euclidean_from(mesh, centre), 0.2);
-  // Measured: mean 7.4 % against 47 %; beyond 0.2 at most 31 % against 161 %
-  // (without the splits: mean 15 %, at most 58 %).
+  // Measured: mean 7.5 % against 47 %; beyond 0.2 at most 42 % against 161 %
+  // (without the splits: mean 15 %, at most 58 %; taking the unfolded
+  // vertices at right angles exactly: 14 %, 57 %).
   EXPECT_LT(fmm.mean_relative, 0.09);
-  EXPECT_LT(fmm.max_relative_far, 0.4);
+  EXPECT_LT(fmm.max_relative_far, 0.5);
   EXPECT_GT(edges.max_relative_far, 1.5);
 }
 
@@ -239,6 +240,25 @@ TEST(FastMarching, InvariantUnderRotationTranslationAndScale) {
   for (Index v = 0; v < mesh.num_vertices(); ++v) EXPECT_EQ(twice.distance[v], 2.0 * reference.distance[v]);
   EXPECT_EQ(twice.nearest_source, reference.nearest_source);
   EXPECT_EQ(twice.farthest, reference.farthest);
+}
+
+// The sheared grid's obtuse corners unfold onto vertices at right angles
+// exactly to one of their sides, where rounding alone, which a rotation
+// changes, would choose the vertex (SHREC07's mechanical parts have such
+// corners): every copy must split the corners alike.
+TEST(FastMarching, SimilarCopiesOfARegularGridSplitTheCornersAlike) {
+  const int n = 24;
+  Mesh mesh = make_grid(n, n, 1.0 / n);
+  for (Index v = 0; v < mesh.num_vertices(); ++v) mesh.vertices(v, 0) += mesh.vertices(v, 1);
+  const Index centre = (n / 2) * (n + 1) + n / 2;
+  const DistanceField reference = fast_marching(build_mesh_graph(mesh), centre);
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    const Similarity t = random_similarity(mesh, seed);
+    const DistanceField moved = fast_marching(build_mesh_graph(transformed(mesh, t)), centre);
+    for (Index v = 0; v < mesh.num_vertices(); ++v)
+      ASSERT_NEAR(moved.distance[v], t.scale * reference.distance[v], 1e-12 * t.scale * reference.max_distance)
+          << "seed " << seed << ", vertex " << v;
+  }
 }
 
 // A label restriction keeps the front inside the region: vertices of other

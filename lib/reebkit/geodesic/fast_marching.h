@@ -72,8 +72,10 @@ class FastMarchingSolver final : public GeodesicSolver {
 /// obtuse corner (above 90.6 degrees) is split as Kimmel and Sethian do: the
 /// triangles beyond the opposite side are unfolded into the plane of
 /// (w, v, u) until one brings a vertex y into the section of directions at
-/// right angles or less to both wv and wu; the virtual triangles (w, v, y) and (w, y, u), acute at w, then
-/// update w as real ones do when their corners are settled. A corner whose
+/// less than right angles to both wv and wu (by a cosine of 1e-9 at least,
+/// so that similar copies of a mesh pick the same y); the virtual
+/// triangles (w, v, y) and (w, y, u), acute at w, then update w as real ones
+/// do when their corners are settled. A corner whose
 /// unfolding meets a boundary, or needs more than kMaxUnfoldings triangles,
 /// keeps only its real triangle; degenerate triangles give edge updates only.
 ///
