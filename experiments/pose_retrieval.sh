@@ -48,12 +48,14 @@
 # matrices are derived from academic-use data: they stay in
 # BUILD_DIR/pose_retrieval/NAME/ and are never committed (the remeshed and
 # body-shape meshes in meshes/, the class file NAME.cla). THREADS (default 2)
-# sets the threads of every step. REUSE=1 keeps the meshes, class file and
-# baseline matrices of each collection whose last run completed and redoes
-# only reebkit's index, distances and report (about 25 s a collection): for
-# re-runs while reebkit's settings change (the generation settings POSES,
-# PEOPLE, POSES_PER_PERSON, FACTORS, WIDE_FACTORS, REMESH_* then have no
-# effect).
+# sets the threads of every step. Every method is also evaluated after local
+# scaling with its SCALING_K-th (default 10) nearest model (reeb eval
+# --local-scaling), as in shrec07_retrieval.sh. REUSE=1 keeps the meshes,
+# class file and baseline matrices of each collection whose last run
+# completed and redoes only reebkit's index, distances and report (about
+# 25 s a collection): for re-runs while reebkit's settings change (the
+# generation settings POSES, PEOPLE, POSES_PER_PERSON, FACTORS,
+# WIDE_FACTORS, REMESH_* then have no effect).
 # Time on 2 threads of a shared machine: tosca-remeshed about 5 min (86 s
 # remeshing), body-shape and body-shape-wide about 3 min each (1 min making
 # and remeshing the people), the Shape-DNA baseline most of the rest
@@ -184,7 +186,8 @@ evaluate() {
   step "$name: evaluation report" \
     "$reeb" eval "$out/reebkit.matrix" --name reebkit --cla "$cla" -o "$report/$name" \
       --compare "$out/baseline-shape-dna.matrix:Shape-DNA" "$out/baseline-geodesic.matrix:geodesic-histogram" \
-        "$out/baseline-d2.matrix:D2"
+        "$out/baseline-d2.matrix:D2" \
+      --local-scaling "${SCALING_K:-10}"
   touch "$out/complete"
 }
 
