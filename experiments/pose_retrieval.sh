@@ -63,7 +63,8 @@
 # WIDE_FACTORS, REMESH_* then have no effect).
 # Time on 2 threads of a shared machine: tosca-remeshed about 5 min (86 s
 # remeshing), body-shape and body-shape-wide about 3 min each (1 min making
-# and remeshing the people), the Shape-DNA baseline most of the rest
+# and remeshing the people), animal-shape about 1.5 min, the Shape-DNA
+# baseline most of the rest
 # (docs/results.md).
 set -euo pipefail
 # shellcheck source=experiments/common.sh
