@@ -33,8 +33,9 @@
 #  - animal-shape: the same made from TOSCA's cat (seed 11, parts in
 #    WIDE_FACTORS: tail, head with neck, four legs, torso), each cat in
 #    POSES_PER_PERSON of the 11 cat poses: near classes of a four-legged
-#    animal, which no collection above has. Reported only: no weight was
-#    chosen on it.
+#    animal, which no collection above has;
+#  - dog-shape, horse-shape: the same from TOSCA's dog (seed 13) and horse
+#    (seed 17), each animal in all 8 poses of its shape.
 # Remeshing: N is drawn uniformly in [REMESH_MIN, REMESH_MAX] (default 8000,
 # 15000: the range of an independent collection of scanned bodies) and S is
 # the CRC (cksum) of the mesh name, N = REMESH_MIN + S mod the range width:
@@ -72,7 +73,7 @@ source "$(dirname "$0")/common.sh"
 
 experiment_arguments results/pose "$@"
 poses=${POSES:-1}
-collections=${COLLECTIONS:-tosca shrec07-pose tosca-remeshed body-shape body-shape-wide animal-shape}
+collections=${COLLECTIONS:-tosca shrec07-pose tosca-remeshed body-shape body-shape-wide animal-shape dog-shape horse-shape}
 remesh_min=${REMESH_MIN:-8000}
 remesh_max=${REMESH_MAX:-15000}
 people=${PEOPLE:-10}
@@ -90,8 +91,8 @@ tosca_classes="cat centaur dog horse michael"
 for name in $collections; do
   case $name in
     tosca | shrec07-pose | tosca-remeshed) ;;
-    body-shape | body-shape-wide | animal-shape) require_built "$body_shapes" ;;
-    *) echo "$0: unknown collection '$name' in COLLECTIONS (tosca, shrec07-pose, tosca-remeshed, body-shape, body-shape-wide, animal-shape)" >&2
+    body-shape | body-shape-wide | animal-shape | dog-shape | horse-shape) require_built "$body_shapes" ;;
+    *) echo "$0: unknown collection '$name' in COLLECTIONS (tosca, shrec07-pose, tosca-remeshed, body-shape, body-shape-wide, animal-shape, dog-shape, horse-shape)" >&2
        exit 2 ;;
   esac
 done
@@ -172,12 +173,12 @@ remesh_each() {
   echo "$# meshes remeshed to $remesh_min-$remesh_max vertices in $dir/meshes"
 }
 
-# body_shape_collection NAME FACTORS SEED SHAPE: the people made from the
-# TOSCA shape SHAPE (full resolution, in people/, with people.txt saying
-# what each person's proportions are), remeshed.
+# body_shape_collection NAME FACTORS SEED SHAPE POSES: the people made from
+# the TOSCA shape SHAPE, each in POSES poses (full resolution, in people/,
+# with people.txt saying what each person's proportions are), remeshed.
 body_shape_collection() {
   local name=$1 dir=$work/$1
-  "$body_shapes" "$tosca" "$dir/people" --shape "$4" --people "$people" --poses "$poses_per_person" --factors "$2" \
+  "$body_shapes" "$tosca" "$dir/people" --shape "$4" --people "$people" --poses "$5" --factors "$2" \
     --seed "$3" --cla "$dir/$name.cla"
   remesh_each "$dir" "$dir"/people/*.ply
   rm "$dir"/people/*.ply
@@ -208,13 +209,19 @@ for name in $collections; do
         step "TOSCA, every pose remeshed" remesh_each "$work/tosca-remeshed" "$tosca"/*.off ;;
       body-shape)
         step "$people people made from michael, $poses_per_person poses each, remeshed" \
-          body_shape_collection body-shape "$factors" 1 michael ;;
+          body_shape_collection body-shape "$factors" 1 michael "$poses_per_person" ;;
       body-shape-wide)
         step "$people other people made from michael, parts $wide_factors, $poses_per_person poses each, remeshed" \
-          body_shape_collection body-shape-wide "$wide_factors" 7 michael ;;
+          body_shape_collection body-shape-wide "$wide_factors" 7 michael "$poses_per_person" ;;
       animal-shape)
         step "$people cats of other proportions, parts $wide_factors, $poses_per_person poses each, remeshed" \
-          body_shape_collection animal-shape "$wide_factors" 11 cat ;;
+          body_shape_collection animal-shape "$wide_factors" 11 cat "$poses_per_person" ;;
+      dog-shape)
+        step "$people dogs of other proportions, parts $wide_factors, 8 poses each, remeshed" \
+          body_shape_collection dog-shape "$wide_factors" 13 dog 8 ;;
+      horse-shape)
+        step "$people horses of other proportions, parts $wide_factors, 8 poses each, remeshed" \
+          body_shape_collection horse-shape "$wide_factors" 17 horse 8 ;;
     esac
   fi
   case $name in
@@ -225,7 +232,7 @@ for name in $collections; do
       evaluate shrec07-pose "$work/shrec07-pose/meshes" "$work/shrec07-pose/shrec07-pose.cla" ;;
     tosca-remeshed)
       evaluate tosca-remeshed "$work/tosca-remeshed/meshes" "$work/tosca-remeshed/tosca-remeshed.cla" ;;
-    body-shape | body-shape-wide | animal-shape)
+    body-shape | body-shape-wide | animal-shape | dog-shape | horse-shape)
       evaluate "$name" "$work/$name/meshes" "$work/$name/$name.cla"
       cp "$work/$name/people/people.txt" "$report/$name/people.txt" ;;
   esac
