@@ -34,6 +34,9 @@ TEST(ReebFeaturesCli, GeodesicMethodIsAnOption) {
                                                 " -o " + shell_quoted(dir / "g.json") + " --geodesic fmm 2>&1");
   ASSERT_EQ(graphed, 0) << graph_out;
   EXPECT_NE(graph_out.find("2 cycles"), std::string::npos) << graph_out;  // genus 2
+  // Where the time goes: every step of the analysis, then the attributes.
+  EXPECT_NE(graph_out.find(" ms; the spectra's surface "), std::string::npos) << graph_out;
+  EXPECT_NE(graph_out.find("g.json (attributes and JSON "), std::string::npos) << graph_out;
 
   const auto [bad, bad_out] = run_command(reeb + " features " + shell_quoted(cow) + " --geodesic heat 2>&1");
   EXPECT_EQ(bad, 1);
@@ -66,6 +69,9 @@ TEST(ReebFeaturesCli, MinPersistenceIsAnOption) {
                                                 " -o " + shell_quoted(dir / "g.json") + " --min-persistence 0.02 2>&1");
   ASSERT_EQ(graphed, 0) << graph_out;
   EXPECT_NE(graph_out.find("2 cycles"), std::string::npos) << graph_out;  // genus 2
+  // Where the time goes: every step of the analysis, then the attributes.
+  EXPECT_NE(graph_out.find(" ms; the spectra's surface "), std::string::npos) << graph_out;
+  EXPECT_NE(graph_out.find("g.json (attributes and JSON "), std::string::npos) << graph_out;
 
   // reeb index records it with the collection's analysis options.
   const auto [indexed, index_out] =

@@ -3,6 +3,7 @@
 // skeleton (section 5.2), as JSON, a colored PLY, OBJ lines and a figure.
 #include "reeb/cli.h"
 #include "reebkit/core/error.h"
+#include "reebkit/core/timer.h"
 #include "reebkit/io/file_bytes.h"
 #include "reebkit/output/reeb_graph_export.h"
 #include "reebkit/pipeline/analyze_mesh.h"
@@ -33,6 +34,7 @@ void print_summary(const std::vector<MeshAnalysis>& results) {
     time.features += r.timings.features;
     time.quotient += r.timings.quotient;
     time.reeb += r.timings.reeb;
+    time.spectra_surface += r.timings.spectra_surface;
   }
   std::cout << vertices << " vertices, " << features << " feature points\n"
             << count[0] + count[1] + count[2] + count[3] << " nodes:";
@@ -40,7 +42,8 @@ void print_summary(const std::vector<MeshAnalysis>& results) {
     std::cout << " " << count[static_cast<int>(type)] << " " << node_type_name(type);
   std::cout << "; " << leaves << " leaves, " << cycles << " cycles\n"
             << std::fixed << std::setprecision(2) << "time: graph " << time.graph << " ms, features " << time.features
-            << " ms, f_q " << time.quotient << " ms, Reeb graph " << time.reeb << " ms\n"
+            << " ms, f_q " << time.quotient << " ms, Reeb graph " << time.reeb << " ms; the spectra's surface "
+            << time.spectra_surface << " ms (beside them where a second thread is free)\n"
             << std::defaultfloat;
 }
 
@@ -96,8 +99,11 @@ int run_graph(const std::vector<std::string>& args) {
 
   // --png without --ply/--obj renders from temporary files, removed at the end.
   const auto scratch = std::filesystem::temp_directory_path() / ("reeb_graph_" + std::to_string(::getpid()));
+  Timer attributes;  // the attributes are computed for the JSON
   write_reeb_graph_json(json_path, results);
-  std::cout << "wrote " << json_path << "\n";
+  std::cout << "wrote " << json_path << " (attributes and JSON " << std::fixed << std::setprecision(2)
+            << attributes.elapsed() << " ms)\n"
+            << std::defaultfloat;
   if (!png_path.empty() || !ply_path.empty()) {
     const auto ply = or_temporary(ply_path, scratch, "segmentation.ply");
     write_segmentation_ply(ply, results);
