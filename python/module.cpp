@@ -44,10 +44,10 @@ std::string analysis_options_doc() {
   std::string doc;
   const AnalysisOptions defaults;
   for (const AnalysisOptionField& field : analysis_option_fields()) {
-    const OptionValue value = field.get(defaults);
-    const std::string text = option_text(value);
-    doc += "    " + field.name + "=" + (std::holds_alternative<std::string>(value) ? "'" + text + "'" : text) + ": " +
-           field.help + "\n";
+    // As Python writes the value (0.0, 0.05, 'fmm'), the keyword argument's literal.
+    const std::string literal =
+        py::repr(std::visit([](const auto& v) -> py::object { return py::cast(v); }, field.get(defaults)));
+    doc += "    " + field.name + "=" + literal + ": " + field.help + "\n";
   }
   return doc;
 }

@@ -4,9 +4,11 @@
 #include "reebkit/features/critical_points.h"
 #include "reebkit/geodesic/dijkstra.h"
 #include "reebkit/geodesic/fast_marching.h"
+#include "reebkit/mesh/load_mesh.h"
 #include "reebkit/mesh/resampling.h"
 #include "reebkit/mesh/shapes.h"
 #include "reebkit/mesh/transform.h"
+#include "support/test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -246,6 +248,34 @@ TEST(FeaturePoints, SymmetricMeshesWithTiedDiameterEndsStillHaveFeaturePoints) {
     }
 }
 
+// TOSCA's cat3 raises a front paw (the only part above z = 140): the largest
+// maxima of f1 and f2 there fall on different toes, more than epsilon
+// apart, so eq. (6) alone keeps no feature point on the whole leg;
+// protrusion_persistence adds its tip back.
+TEST(FeaturePoints, ProtrusionPersistenceKeepsALimbWhoseTipsSplit) {
+  const auto tosca = test::shared_dataset("tosca_dev");
+  if (!tosca) GTEST_SKIP() << "../shared/datasets/tosca_dev is not beside the checkout";
+  const Mesh cat = load_mesh(*tosca / "cat3.off").components.front();
+  const MeshGraph g = build_mesh_graph(cat);
+  const auto on_the_paw = [&](const FeaturePoints& f) {
+    return std::count_if(f.vertices.begin(), f.vertices.end(), [&](Index v) { return cat.vertices(v, 2) > 140; });
+  };
+  const FeaturePoints paper = extract_feature_points(g, {});
+  EXPECT_EQ(on_the_paw(paper), 0);
+  FeatureOptions rescue;
+  rescue.protrusion_persistence = 0.05;
+  const FeaturePoints rescued = extract_feature_points(g, rescue);
+  EXPECT_GE(on_the_paw(rescued), 1);
+  // Added, never removed, and every added point is an extremum of f1 or f2.
+  for (const Index v : paper.vertices)
+    EXPECT_NE(std::find(rescued.vertices.begin(), rescued.vertices.end(), v), rescued.vertices.end());
+  for (std::size_t i = paper.vertices.size(); i < rescued.vertices.size(); ++i) {
+    const Index v = rescued.vertices[i];
+    EXPECT_TRUE(std::binary_search(rescued.extrema1.begin(), rescued.extrema1.end(), v) ||
+                std::binary_search(rescued.extrema2.begin(), rescued.extrema2.end(), v));
+  }
+}
+
 TEST(FeaturePoints, RejectsBadInput) {
   const MeshGraph g = build_mesh_graph(make_cube());
   FeatureOptions bad_start;
@@ -258,6 +288,9 @@ TEST(FeaturePoints, RejectsBadInput) {
     FeatureOptions bad_persistence;
     bad_persistence.min_persistence = bad;
     EXPECT_THROW(extract_feature_points(g, bad_persistence), InvalidArgument) << bad;
+    FeatureOptions bad_protrusion;
+    bad_protrusion.protrusion_persistence = bad;
+    EXPECT_THROW(extract_feature_points(g, bad_protrusion), InvalidArgument) << bad;
   }
   // Two disjoint triangles: not connected.
   Mesh two;

@@ -20,6 +20,7 @@ AnalysisOptions changed() {
   o.features.start_vertex = 7;
   o.features.max_extra_sweeps = 1;
   o.features.extra_seeds = 0;
+  o.features.protrusion_persistence = 0.05;
   o.reeb.level_lines = LevelLines::Paper;
   o.reeb.leaves = Leaves::Propagation;
   o.reeb.skeleton_levels = 50;

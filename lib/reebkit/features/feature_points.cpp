@@ -148,6 +148,29 @@ DiameterEnds search_diameter_ends(GeodesicSolver& search, const FeatureOptions& 
   return ends;
 }
 
+// FeatureOptions::protrusion_persistence: the extrema of f1 and f2 (snapped
+// to the tie grid) persisting at least that share of the diameter, the most
+// extreme (largest f1 + f2, then the id) first, each made a feature point
+// where none lies within 2 epsilon.
+void add_protrusion_tips(const MeshGraph& graph, const FeatureOptions& options, const std::vector<double>& f1,
+                         const std::vector<double>& f2, GeodesicSolver& solver, FeaturePoints& out) {
+  const double threshold = std::round(options.protrusion_persistence / kTieGrid);
+  std::vector<Index> tips = persistent_extrema(graph, f1, threshold);
+  const std::vector<Index> tips2 = persistent_extrema(graph, f2, threshold);
+  tips.insert(tips.end(), tips2.begin(), tips2.end());
+  const auto extremeness = [&](Index v) { return f1[static_cast<std::size_t>(v)] + f2[static_cast<std::size_t>(v)]; };
+  std::sort(tips.begin(), tips.end(),
+            [&](Index a, Index b) { return std::make_pair(-extremeness(a), a) < std::make_pair(-extremeness(b), b); });
+  tips.erase(std::unique(tips.begin(), tips.end()), tips.end());
+  GeodesicOptions reach{2.0 * options.epsilon * out.diameter};
+  reach.separate_sources = true;
+  for (const Index v : tips) {
+    const DistanceField& near_features = solver.run(out.vertices, reach);
+    if (near_features.distance[static_cast<std::size_t>(v)] <= reach.radius) continue;
+    out.vertices.push_back(v);
+  }
+}
+
 }  // namespace
 
 FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOptions& options) {
@@ -166,6 +189,9 @@ FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOption
   if (!(options.min_persistence >= 0.0 && options.min_persistence <= 1.0))
     throw InvalidArgument("extract_feature_points: min_persistence must lie in [0, 1], got " +
                           std::to_string(options.min_persistence));
+  if (!(options.protrusion_persistence >= 0.0 && options.protrusion_persistence <= 1.0))
+    throw InvalidArgument("extract_feature_points: protrusion_persistence must lie in [0, 1], got " +
+                          std::to_string(options.protrusion_persistence));
   if (&solver.graph() != &graph || solver.method() != options.geodesic)
     throw InvalidArgument(std::string("extract_feature_points: the solver must run ") +
                           geodesic_name(options.geodesic) + " on the mesh graph analysed");
@@ -272,6 +298,7 @@ FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOption
       to_features[static_cast<std::size_t>(w)] =
           std::min(at(to_features, w), ball.distance[static_cast<std::size_t>(w)]);
   }
+  if (options.protrusion_persistence > 0.0) add_protrusion_tips(graph, options, f1, f2, solver, out);
   return out;
 }
 

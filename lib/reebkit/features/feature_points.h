@@ -54,6 +54,13 @@ struct FeatureOptions {
   /// 0.01 and its measured effect on stability and retrieval: docs/results.md,
   /// "Sampling stability". In [0, 1].
   double min_persistence = 0.01;
+  /// An extension of eq. (6), off at 0: an extremum of f1 or f2 persisting
+  /// at least protrusion_persistence x diameter (a limb, not a toe) that
+  /// lies more than 2 epsilon from every feature point is made one too. On
+  /// a paw or a hand the largest maxima of f1 and f2 can fall on different
+  /// toes, more than epsilon apart, and the relaxed intersection then keeps
+  /// no point for the whole limb. In [0, 1].
+  double protrusion_persistence = 0.0;
 };
 
 /// Geodesic distances closer than this fraction of the diameter count as

@@ -52,6 +52,10 @@ const std::vector<AnalysisOptionField>& analysis_option_fields() {
             [](auto& o) -> auto& { return o.features.max_extra_sweeps; }, OptionRange{0}),
       field("extra_seeds", "further diameter sweeps from farthest-point seeds",
             [](auto& o) -> auto& { return o.features.extra_seeds; }, OptionRange{0}),
+      field("protrusion_persistence",
+            "also make a feature point of every extremum of f1 or f2 persisting at least this fraction of the "
+            "diameter that lies more than 2 epsilon from every feature point (0: off, eq. 6 alone)",
+            [](auto& o) -> auto& { return o.features.protrusion_persistence; }, OptionRange{0, 1}),
       field("level_lines", "what a level line is: contour (the connected curves of the propagation front, exact "
             "topology) or paper (Definition 6: connected sets of candidate vertices)",
             [](auto& o) -> auto& { return o.reeb.level_lines; }),
