@@ -164,10 +164,12 @@ void add_protrusion_tips(const MeshGraph& graph, const FeatureOptions& options, 
   tips.erase(std::unique(tips.begin(), tips.end()), tips.end());
   GeodesicOptions reach{2.0 * options.epsilon * out.diameter};
   reach.separate_sources = true;
+  // The field changes only when a tip is added: one pass, then one per tip added.
+  const DistanceField* near_features = &solver.run(out.vertices, reach);
   for (const Index v : tips) {
-    const DistanceField& near_features = solver.run(out.vertices, reach);
-    if (near_features.distance[static_cast<std::size_t>(v)] <= reach.radius) continue;
+    if (near_features->distance[static_cast<std::size_t>(v)] <= reach.radius) continue;
     out.vertices.push_back(v);
+    near_features = &solver.run(out.vertices, reach);
   }
 }
 
