@@ -3,65 +3,147 @@
 #include "reebkit/core/error.h"
 
 #include <algorithm>
+#include <array>
+#include <numeric>
 #include <string>
 #include <vector>
 
 namespace reebkit {
 
+namespace {
+
+/// A triangle of nonzero area: its corners and what each corner adds.
+struct Element {
+  std::array<Index, 3> v;
+  /// Half the cotangent of the angle at corner k, which weighs the edge
+  /// opposite it (corners k + 1 and k + 2).
+  std::array<double, 3> half_cot;
+  double area;
+};
+
+/// The columns of a symmetric matrix with the pattern of the mesh's edges
+/// (and the diagonal), in compressed column storage: each column's rows
+/// increasing. Built straight from the elements: a triplet list would hold
+/// 21 entries per triangle, allocated and sorted for each operator.
+struct Pattern {
+  std::vector<int> outer, inner;
+  /// The position of entry (row, col) in `inner`.
+  std::size_t at(Index row, Index col) const {
+    const auto first = inner.begin() + outer[static_cast<std::size_t>(col)],
+               last = inner.begin() + outer[static_cast<std::size_t>(col) + 1];
+    return static_cast<std::size_t>(std::lower_bound(first, last, static_cast<int>(row)) - inner.begin());
+  }
+};
+
+Pattern edge_pattern(const std::vector<Element>& elements, Index n) {
+  Pattern p;
+  // Each corner lists itself and the triangle's two other corners; the
+  // duplicates are dropped per column below.
+  std::vector<int> count(static_cast<std::size_t>(n) + 1, 0);
+  for (const Element& e : elements)
+    for (const Index v : e.v) count[static_cast<std::size_t>(v) + 1] += 3;
+  for (std::size_t c = 1; c < count.size(); ++c) count[c] += count[c - 1];
+  std::vector<int> rows(static_cast<std::size_t>(count.back()));
+  std::vector<int> fill(count.begin(), count.end() - 1);
+  for (const Element& e : elements)
+    for (const Index col : e.v)
+      for (const Index row : e.v)
+        rows[static_cast<std::size_t>(fill[static_cast<std::size_t>(col)]++)] = static_cast<int>(row);
+  p.outer.assign(static_cast<std::size_t>(n) + 1, 0);
+  p.inner.reserve(rows.size() / 2 + static_cast<std::size_t>(n));
+  for (std::size_t col = 0; col < static_cast<std::size_t>(n); ++col) {
+    const auto first = rows.begin() + count[col], last = rows.begin() + count[col + 1];
+    std::sort(first, last);
+    p.inner.insert(p.inner.end(), first, std::unique(first, last));
+    p.outer[col + 1] = static_cast<int>(p.inner.size());
+  }
+  return p;
+}
+
+Eigen::SparseMatrix<double> matrix(const Pattern& p, const std::vector<double>& values) {
+  const auto n = static_cast<Eigen::Index>(p.outer.size() - 1);
+  return Eigen::Map<const Eigen::SparseMatrix<double>>(n, n, static_cast<Eigen::Index>(p.inner.size()), p.outer.data(),
+                                                       p.inner.data(), values.data());
+}
+
+}  // namespace
+
 LaplaceBeltrami laplace_beltrami(const Mesh& mesh, const LaplaceBeltramiOptions& options) {
   const std::string source = mesh.source.empty() ? "mesh" : mesh.source;
   if (mesh.num_triangles() == 0) throw InvalidMeshError(source, "no triangle: no Laplace-Beltrami operator");
-  using Triplet = Eigen::Triplet<double>;
-  std::vector<Triplet> stiffness, mass;
-  stiffness.reserve(static_cast<std::size_t>(mesh.num_triangles()) * 9);
-  mass.reserve(static_cast<std::size_t>(mesh.num_triangles()) * 9);
-  std::vector<bool> covered(static_cast<std::size_t>(mesh.num_vertices()), false);  // on a triangle with area
+  // The triangles with area, their vertices renumbered to the rows.
+  std::vector<Element> elements;
+  elements.reserve(static_cast<std::size_t>(mesh.num_triangles()));
+  std::vector<Index> row(static_cast<std::size_t>(mesh.num_vertices()), kInvalidIndex);
   for (Index t = 0; t < mesh.num_triangles(); ++t) {
-    const Index v[3] = {mesh.triangles(t, 0), mesh.triangles(t, 1), mesh.triangles(t, 2)};
-    const Vec3 p[3] = {mesh.vertices.row(v[0]), mesh.vertices.row(v[1]), mesh.vertices.row(v[2])};
+    Element e;
+    e.v = {mesh.triangles(t, 0), mesh.triangles(t, 1), mesh.triangles(t, 2)};
+    const Vec3 p[3] = {mesh.vertices.row(e.v[0]), mesh.vertices.row(e.v[1]), mesh.vertices.row(e.v[2])};
     const double twice_area = (p[1] - p[0]).cross(p[2] - p[0]).norm();
     const double longest =
         std::max({(p[1] - p[0]).squaredNorm(), (p[2] - p[1]).squaredNorm(), (p[0] - p[2]).squaredNorm()});
     if (!(twice_area > 1e-12 * longest)) continue;  // spans no surface; its cotangents are undefined
-    for (const Index corner : v) covered[static_cast<std::size_t>(corner)] = true;
     for (int k = 0; k < 3; ++k) {
       // The angle at corner k is opposite the edge (i, j); its cotangent is
       // dot / |cross| of the two edge vectors leaving the corner, and
       // |cross| = twice the area for every corner.
       const int i = (k + 1) % 3, j = (k + 2) % 3;
-      const double half_cot = 0.5 * (p[i] - p[k]).dot(p[j] - p[k]) / twice_area;
-      stiffness.emplace_back(v[i], v[j], -half_cot);
-      stiffness.emplace_back(v[j], v[i], -half_cot);
-      stiffness.emplace_back(v[i], v[i], half_cot);
-      stiffness.emplace_back(v[j], v[j], half_cot);
+      e.half_cot[static_cast<std::size_t>(k)] = 0.5 * (p[i] - p[k]).dot(p[j] - p[k]) / twice_area;
     }
-    const double area = 0.5 * twice_area;
-    for (int a = 0; a < 3; ++a) {
-      if (options.mass == MassMatrix::Lumped) {
-        mass.emplace_back(v[a], v[a], area / 3);
-        continue;
-      }
-      for (int b = 0; b < 3; ++b) mass.emplace_back(v[a], v[b], area / (a == b ? 6 : 12));
-    }
+    e.area = 0.5 * twice_area;
+    for (const Index v : e.v) row[static_cast<std::size_t>(v)] = 0;
+    elements.push_back(e);
   }
   // Rows and columns for the vertices with area only.
   LaplaceBeltrami result;
-  std::vector<Index> row(covered.size(), kInvalidIndex);
-  for (std::size_t v = 0; v < covered.size(); ++v)
-    if (covered[v]) {
+  for (std::size_t v = 0; v < row.size(); ++v)
+    if (row[v] != kInvalidIndex) {
       row[v] = static_cast<Index>(result.vertex.size());
       result.vertex.push_back(static_cast<Index>(v));
     }
   if (result.vertex.empty())
     throw InvalidMeshError(source, "no triangle of nonzero area: no Laplace-Beltrami operator");
-  for (std::vector<Triplet>* entries : {&stiffness, &mass})
-    for (Triplet& e : *entries)
-      e = Triplet(row[static_cast<std::size_t>(e.row())], row[static_cast<std::size_t>(e.col())], e.value());
-  const auto n = static_cast<Eigen::Index>(result.vertex.size());
-  result.stiffness.resize(n, n);
-  result.stiffness.setFromTriplets(stiffness.begin(), stiffness.end());
-  result.mass.resize(n, n);
-  result.mass.setFromTriplets(mass.begin(), mass.end());
+  for (Element& e : elements)
+    for (Index& v : e.v) v = row[static_cast<std::size_t>(v)];
+  const auto n = static_cast<Index>(result.vertex.size());
+
+  // Each sum in the order of the elements, as a triplet list would add up its
+  // duplicates.
+  const Pattern pattern = edge_pattern(elements, n);
+  std::vector<double> stiffness(pattern.inner.size(), 0.0), mass;
+  if (options.mass == MassMatrix::Consistent) mass.assign(pattern.inner.size(), 0.0);
+  std::vector<double> lumped(options.mass == MassMatrix::Lumped ? static_cast<std::size_t>(n) : 0, 0.0);
+  for (const Element& e : elements) {
+    std::size_t at[3][3];  // the position of entry (row e.v[r], column e.v[c])
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c)
+        at[r][c] = pattern.at(e.v[static_cast<std::size_t>(r)], e.v[static_cast<std::size_t>(c)]);
+    for (int k = 0; k < 3; ++k) {
+      const int i = (k + 1) % 3, j = (k + 2) % 3;
+      const double half_cot = e.half_cot[static_cast<std::size_t>(k)];
+      stiffness[at[i][j]] -= half_cot;
+      stiffness[at[j][i]] -= half_cot;
+      stiffness[at[i][i]] += half_cot;
+      stiffness[at[j][j]] += half_cot;
+    }
+    for (int a = 0; a < 3; ++a) {
+      if (options.mass == MassMatrix::Lumped) {
+        lumped[static_cast<std::size_t>(e.v[static_cast<std::size_t>(a)])] += e.area / 3;
+        continue;
+      }
+      for (int b = 0; b < 3; ++b) mass[at[b][a]] += e.area / (a == b ? 6 : 12);
+    }
+  }
+  result.stiffness = matrix(pattern, stiffness);
+  if (options.mass == MassMatrix::Consistent) {
+    result.mass = matrix(pattern, mass);
+  } else {
+    Pattern diagonal;
+    diagonal.outer.resize(static_cast<std::size_t>(n) + 1);
+    std::iota(diagonal.outer.begin(), diagonal.outer.end(), 0);
+    diagonal.inner.assign(diagonal.outer.begin(), diagonal.outer.end() - 1);
+    result.mass = matrix(diagonal, lumped);
+  }
   return result;
 }
 
