@@ -3,8 +3,10 @@
 //
 // Crash consistency. The file is written in HDF5's single-writer /
 // multiple-reader (SWMR) mode (HDF5 >= 1.10, latest file format): the library
-// orders its metadata writes so that the file on disk is always a coherent
-// HDF5 file, whatever moment the writer process dies at. On top of that,
+// orders its metadata writes so that the file on disk is a coherent HDF5
+// file between any two of its writes; a write the process is killed inside
+// is completed from the write journal (store/write_journal.h) when the file
+// is next opened. On top of that,
 // reebkit commits entries in two phases:
 //   1. append the rows of every dataset, H5Fflush, fsync;
 //   2. write the entry count into the one-element dataset `count`, H5Fflush,
@@ -22,6 +24,7 @@
 #include "reebkit/store/collection_file.h"
 
 #include "reebkit/core/error.h"
+#include "reebkit/store/write_journal.h"
 
 #include <H5Cpp.h>
 #include <fcntl.h>
@@ -642,6 +645,7 @@ constexpr unsigned kSwmrReadAttempts = 4;
 
 H5::H5File open_for_reading(const fs::path& path) {
   if (!fs::exists(path)) fail(path, "no such file");
+  complete_interrupted_write(path);  // a writer killed inside a write (store/write_journal.h)
   if (H5Fis_hdf5(path.c_str()) <= 0) fail(path, "not an HDF5 file");
   try {
     return H5::H5File(path.string(), H5F_ACC_RDONLY);
@@ -882,6 +886,7 @@ void CollectionWriter::Impl::abandon() noexcept {
   if (file.getId() == H5I_INVALID_HID) return;
   void* handle = nullptr;
   if (H5Fget_vfd_handle(file.getId(), H5P_DEFAULT, &handle) >= 0 && handle != nullptr) {
+    stop_write_journal(*static_cast<int*>(handle));
     const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
     if (null >= 0) {
       ::dup2(null, *static_cast<int*>(handle));
@@ -928,6 +933,7 @@ void CollectionWriter::Impl::create(const fs::path& target, const Provenance& pr
   H5::FileAccPropList access_list;
   access_list.setLibverBounds(H5F_LIBVER_LATEST, H5F_LIBVER_LATEST);  // SWMR needs the 1.10 format
   limit_caches(access_list);
+  use_write_journal(access_list.getId());  // see the top of the file
   file = H5::H5File(target.string(), H5F_ACC_TRUNC, create_list, access_list);
 
   const int layout = kCollectionLayoutVersion;
@@ -1027,6 +1033,8 @@ CollectionWriter::CollectionWriter(const fs::path& path, const Provenance& prove
         w.write_step(temporary, "writing", [&] { w.commit(); });
       },
       [&] { w.abandon(); });
+  // The open file's journal follows it.
+  w.write_step(path, "resuming", [&] { move_write_journal(vfd_descriptor(w.file), path); });
 }
 
 CollectionWriter::~CollectionWriter() {
