@@ -174,7 +174,7 @@ def pip(source, work, reeb, build=None):
                          capture_output=True).stdout)
     run(reeb, "graph", mesh, "-o", work / "graph.json", stdout=subprocess.DEVNULL)
     cli = json.loads((work / "graph.json").read_text())
-    version = run(reeb, "--version", capture_output=True).stdout.split()[-1]
+    version = run(reeb, "--version", capture_output=True).stdout.splitlines()[0].split()[-1]
     expected = {"version": version, "edges": cli["edges"], "cycles": cli["cycles"], "leaves": cli["leaves"],
                 "feature_points": cli["feature_points"], "signature": cli["signature"][0]}
     if got != expected:

@@ -157,5 +157,19 @@ TEST(ReebOptionsCli, AMissingArgumentIsNamedAsTheUsageNamesItAndAnEmptyValueIsRe
   EXPECT_NE(bare_out.find("usage: reeb <command>"), std::string::npos) << bare_out;
 }
 
+// reeb starts itself again with glibc's transparent huge pages for its
+// allocations (tools/reeb/main.cpp), once, and leaves a choice already made.
+TEST(ReebOptionsCli, ReebRunsWithHugePagesForItsAllocationsUnlessToldOtherwise) {
+  const std::string reeb = REEB_BINARY;
+  const auto [status, out] = run_command("env -u GLIBC_TUNABLES " + reeb + " --version");
+  EXPECT_EQ(status, 0) << out;
+  EXPECT_NE(out.find("GLIBC_TUNABLES=glibc.malloc.hugetlb=1\n"), std::string::npos) << out;
+  const auto [kept, kept_out] = run_command("GLIBC_TUNABLES=glibc.malloc.check=0 " + reeb + " --version");
+  EXPECT_NE(kept_out.find("GLIBC_TUNABLES=glibc.malloc.check=0:glibc.malloc.hugetlb=1\n"), std::string::npos)
+      << kept_out;
+  const auto [off, off_out] = run_command("GLIBC_TUNABLES=glibc.malloc.hugetlb=0 " + reeb + " --version");
+  EXPECT_NE(off_out.find("GLIBC_TUNABLES=glibc.malloc.hugetlb=0\n"), std::string::npos) << off_out;
+}
+
 }  // namespace
 }  // namespace reebkit::test

@@ -4,6 +4,7 @@
 #include "reebkit/core/error.h"
 #include "reebkit/core/version.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
@@ -11,6 +12,9 @@
 #include <cstring>
 #include <exception>
 #include <iostream>
+#include <iterator>
+#include <string>
+#include <unistd.h>
 
 namespace reebkit::cli {
 
@@ -38,6 +42,39 @@ const std::vector<Command>& commands() {
 
 namespace {
 
+constexpr const char* kHugePages = "glibc.malloc.hugetlb";
+
+/// A large mesh is analysed in arrays of hundreds of megabytes, most written
+/// once, and on 4 KiB pages the page faults of their first writes take a
+/// good part of the time (docs/benchmarks.md: `reeb graph` on a 1M-face mesh).
+/// glibc backs what it allocates with transparent huge pages when its
+/// tunable glibc.malloc.hugetlb is 1 (glibc >= 2.35; the kernel's THP mode
+/// `madvise` or `always`), and reads its tunables only when a program
+/// starts: so reeb starts itself again with it, once, unless GLIBC_TUNABLES
+/// sets it already (glibc.malloc.hugetlb=0: 4 KiB pages). Only the commands
+/// that analyse one mesh or two, which may be large (and --version, which
+/// shows it): `reeb index` works through many meshes, mostly small, in a
+/// heap it reuses, where huge pages gain nothing and cost a little; and a
+/// new start costs the loading of reeb's libraries again, which a query
+/// answered from a collection file would feel. Where the new start fails,
+/// reeb goes on as it is.
+void restart_with_huge_pages(int argc, char** argv) {
+  static const char* const kAnalysing[] = {"features", "graph", "deform", "match", "variants", "perturb", "--version"};
+  if (argc < 2 || std::none_of(std::begin(kAnalysing), std::end(kAnalysing),
+                               [&](const char* command) { return std::strcmp(argv[1], command) == 0; }))
+    return;
+  const char* set = std::getenv("GLIBC_TUNABLES");
+  const std::string tunables = set != nullptr ? set : "";
+  if (tunables.find(kHugePages) != std::string::npos) return;
+  const std::string wanted = (tunables.empty() ? "" : tunables + ":") + kHugePages + "=1";
+  if (::setenv("GLIBC_TUNABLES", wanted.c_str(), 1) != 0) return;
+  ::execv("/proc/self/exe", argv);
+  if (set != nullptr)
+    ::setenv("GLIBC_TUNABLES", set, 1);
+  else
+    ::unsetenv("GLIBC_TUNABLES");
+}
+
 void print_usage() {
   std::cout << "reeb " << REEBKIT_VERSION
             << " - invariant high-level Reeb graphs of 3D meshes (Tierny et al. 2006)\n\n"
@@ -48,6 +85,7 @@ void print_usage() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  restart_with_huge_pages(argc, argv);
   // Past a file-size limit (ulimit -f), a write fails with EFBIG, reported
   // and cleaned up as any write error, instead of the signal killing the
   // process without a word and leaving its partial output and lock.
@@ -57,7 +95,8 @@ int main(int argc, char** argv) {
     return argc < 2 ? 2 : 0;
   }
   if (!std::strcmp(argv[1], "--version")) {
-    std::cout << "reeb " << REEBKIT_VERSION << "\n";
+    const char* tunables = std::getenv("GLIBC_TUNABLES");
+    std::cout << "reeb " << REEBKIT_VERSION << "\nGLIBC_TUNABLES=" << (tunables != nullptr ? tunables : "") << "\n";
     return 0;
   }
   const std::vector<std::string> args(argv + 2, argv + argc);
