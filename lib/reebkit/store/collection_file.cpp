@@ -1109,7 +1109,7 @@ constexpr int kQueryFileLayout = 1;
 /// part): what graph matching reads of a candidate.
 constexpr std::array<const char*, 3> kQueryGraphDatasets = {"nodes", "node_attr", "edges"};
 /// Entries a query file is written from per read of the collection.
-constexpr std::int64_t kQueryWriteBatch = 4096;
+constexpr std::int64_t kQueryWriteBatch = 512;
 
 /// The offsets dataset of `part` in a query file.
 const char* query_offsets_name(Part part) { return part == kNode ? "node_offset" : "edge_offset"; }
