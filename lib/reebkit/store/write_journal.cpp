@@ -33,17 +33,17 @@ struct RecordHeader {
   std::uint64_t magic;
   std::uint64_t address;
   std::uint64_t size;
-  /// hash_bytes of the address, the size and the bytes.
+  /// record_checksum of the address, the size and the bytes.
   std::uint64_t checksum;
 };
 constexpr std::uint64_t kMagic = 0x6c6e72756f6a6272ULL;  // "rbjournl"
 
+/// hash_bytes of the address and the size, mixed with hash_bytes of the
+/// bytes (hashed where they lie: every write of the collection passes here).
 std::uint64_t record_checksum(std::uint64_t address, std::uint64_t size, const void* bytes) {
-  std::string text(sizeof address + sizeof size + size, '\0');
-  std::memcpy(text.data(), &address, sizeof address);
-  std::memcpy(text.data() + sizeof address, &size, sizeof size);
-  std::memcpy(text.data() + sizeof address + sizeof size, bytes, size);
-  return hash_bytes(text);
+  const std::uint64_t place[2] = {address, size};
+  const std::uint64_t where = hash_bytes({reinterpret_cast<const char*>(place), sizeof place});
+  return where ^ (hash_bytes({static_cast<const char*>(bytes), size}) * 0x9e3779b97f4a7c15ULL);
 }
 
 /// Writes all of `bytes` at `offset`; false on a failure (errno set).
