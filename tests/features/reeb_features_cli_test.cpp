@@ -23,10 +23,11 @@ TEST(ReebFeaturesCli, GeodesicMethodIsAnOption) {
   const std::string reeb = REEB_BINARY;
   const std::filesystem::path cow = embedded_dataset_dir() / "cow.off";
   for (const std::string method : {"dijkstra", "fmm"}) {
-    const auto [status, out] = run_command(reeb + " features " + shell_quoted(cow) + " --geodesic " + method + " -o " +
-                                           shell_quoted(dir / "f.json") + " 2>&1");
+    const auto [status, out] =
+        run_command(reeb + " features " + shell_quoted(cow) + " --geodesic " + method +
+                    " --epsilon 0.05 --min-persistence 0.01 -o " + shell_quoted(dir / "f.json") + " 2>&1");
     ASSERT_EQ(status, 0) << out;
-    // Hooves, horns, ears, tail, muzzle (default --min-persistence 0.01: the teats persist less).
+    // At the scale of a toe: hooves, horns, ears, tail, muzzle (the teats persist less than 0.01).
     EXPECT_NE(out.find("10 feature points"), std::string::npos) << method << ": " << out;
     EXPECT_NE(read_text(dir / "f.json").find("\"geodesic\": \"" + method + "\""), std::string::npos) << method;
   }
@@ -47,8 +48,8 @@ TEST(ReebFeaturesCli, MinPersistenceIsAnOption) {
   const TempDir dir;
   const std::string reeb = REEB_BINARY;
   const std::filesystem::path cow = embedded_dataset_dir() / "cow.off";
-  // 5 % of the diameter keeps only the cow's long extremities; 0.01, the
-  // default, 10; 0, the paper's rule, 14 (the teats too).
+  // 5 % of the diameter keeps only the cow's long extremities; 0.03, the
+  // default, 9; 0, 10; the paper's rule (0 at epsilon 0.05), 14 (the teats too).
   const auto [status, out] = run_command(reeb + " features " + shell_quoted(cow) + " --min-persistence 0.05 -o " +
                                          shell_quoted(dir / "f.json") + " 2>&1");
   ASSERT_EQ(status, 0) << out;
@@ -57,10 +58,15 @@ TEST(ReebFeaturesCli, MinPersistenceIsAnOption) {
   const auto [plain, plain_out] =
       run_command(reeb + " features " + shell_quoted(cow) + " -o " + shell_quoted(dir / "g.json") + " 2>&1");
   ASSERT_EQ(plain, 0) << plain_out;
-  EXPECT_NE(plain_out.find("10 feature points"), std::string::npos) << plain_out;
-  EXPECT_NE(read_text(dir / "g.json").find("\"min_persistence\": 0.01"), std::string::npos);
-  const auto [paper, paper_out] = run_command(reeb + " features " + shell_quoted(cow) + " --min-persistence 0 -o " +
-                                              shell_quoted(dir / "p.json") + " 2>&1");
+  EXPECT_NE(plain_out.find("9 feature points"), std::string::npos) << plain_out;
+  EXPECT_NE(read_text(dir / "g.json").find("\"min_persistence\": 0.03"), std::string::npos);
+  const auto [all, all_out] = run_command(reeb + " features " + shell_quoted(cow) + " --min-persistence 0 -o " +
+                                          shell_quoted(dir / "a.json") + " 2>&1");
+  ASSERT_EQ(all, 0) << all_out;
+  EXPECT_NE(all_out.find("10 feature points"), std::string::npos) << all_out;
+  const auto [paper, paper_out] =
+      run_command(reeb + " features " + shell_quoted(cow) + " --epsilon 0.05 --min-persistence 0 -o " +
+                  shell_quoted(dir / "p.json") + " 2>&1");
   ASSERT_EQ(paper, 0) << paper_out;
   EXPECT_NE(paper_out.find("14 feature points"), std::string::npos) << paper_out;
   EXPECT_NE(read_text(dir / "p.json").find("\"min_persistence\": 0,"), std::string::npos);

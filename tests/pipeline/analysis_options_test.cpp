@@ -66,7 +66,7 @@ TEST(AnalysisOptions, NamedOptionsRoundTrip) {
   ASSERT_EQ(differences.size(), 1u);
   EXPECT_EQ(differences[0].name, "epsilon");
   EXPECT_EQ(differences[0].first, "0.2");
-  EXPECT_EQ(differences[0].second, "0.05");
+  EXPECT_EQ(differences[0].second, "0.15");
 }
 
 TEST(AnalysisOptions, DifferencesListEveryChangedOptionInTableOrderWithBothValues) {
@@ -79,7 +79,7 @@ TEST(AnalysisOptions, DifferencesListEveryChangedOptionInTableOrderWithBothValue
   EXPECT_EQ(differences[0].first, "fmm");
   EXPECT_EQ(differences[0].second, "dijkstra");
   EXPECT_EQ(differences[1].name, "min_persistence");
-  EXPECT_EQ(differences[1].first, "0.01");
+  EXPECT_EQ(differences[1].first, "0.03");
   EXPECT_EQ(differences[1].second, "0");
   EXPECT_EQ(analysis_option_differences(changed(), changed()).size(), 0u);
   EXPECT_EQ(analysis_option_differences(AnalysisOptions{}, changed()).size(), analysis_option_fields().size());

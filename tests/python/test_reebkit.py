@@ -67,7 +67,7 @@ def test_features_and_quotient_function_equal_the_cli(reeb, tmp_path):
 
 
 def test_defaults_are_the_librarys():
-    assert reebkit.analysis_options()["epsilon"] == 0.05
+    assert reebkit.analysis_options()["epsilon"] == 0.15
     assert reebkit.analysis_options()["geodesic"] == "fmm"
     for name, value in reebkit.analysis_options().items():
         assert f"{name}={value!r}" in reebkit.features.__doc__ or f"{name}={value}" in reebkit.features.__doc__

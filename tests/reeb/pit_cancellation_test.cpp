@@ -124,10 +124,15 @@ TEST(CancelPits, LeavesAreTheFeaturePointsOfARemeshedElk) {
   options.target_vertices = elk.num_vertices();
   options.seed = 3;
   const Mesh remeshed = remesh(elk, options).mesh;
-  AnalysisOptions propagation;
+  // Feature points at the scale of a toe (epsilon 0.05), where this remeshed
+  // elk's propagation closes around two pits.
+  AnalysisOptions maxima;
+  maxima.features.epsilon = 0.05;
+  maxima.features.min_persistence = 0.01;
+  AnalysisOptions propagation = maxima;
   propagation.reeb.leaves = Leaves::Propagation;
   const MeshAnalysis raw = analyze_mesh(remeshed, propagation);
-  const MeshAnalysis a = analyze_mesh(remeshed);
+  const MeshAnalysis a = analyze_mesh(remeshed, maxima);
   ASSERT_EQ(a.features.vertices, raw.features.vertices);
   const auto features = static_cast<Index>(a.features.vertices.size());
   EXPECT_EQ(pits(raw.reeb, raw.graph, raw.fq.value), 2);

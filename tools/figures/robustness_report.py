@@ -391,8 +391,9 @@ def main():
            f"{cpu_name()} with 2 threads (the build not counted):\n"]
     out += [f"- {s['step']}: {s['seconds']} s" for s in steps if s["step"] != "total"] + [""]
     out.append("Defaults (docs/method.md): geodesic distances by fast marching (`fmm`; the diameter search on "
-               "Dijkstra passes, its last sweep in fast marching), persistence filter 0.01, epsilon 0.05, up to 3 "
-               "extra sweeps, leaves only at the maxima of f_q (`--leaves maxima`: the pits of the propagation "
+               "Dijkstra passes, its last sweep in fast marching), epsilon 0.15 and persistence filter 0.03 (one "
+               "feature point per limb; the paper's 0.05 and reebkit's 0.01 before layout 9: docs/results.md, "
+               "\"Feature points at the scale of a limb\", compares them), up to 3 extra sweeps, leaves only at the maxima of f_q (`--leaves maxima`: the pits of the propagation "
                "cancelled; docs/results.md, \"Leaves at the maxima of f_q\", compares it with `propagation`). "
                "Dijkstra (`dijkstra`), the paper's method and reebkit's default before layout 7, is measured beside "
                "it in sections 2, 3 and 6: old and new side by side.\n")

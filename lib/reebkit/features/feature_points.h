@@ -12,8 +12,14 @@ namespace reebkit {
 
 struct FeatureOptions {
   /// epsilon of eq. (6): two extrema closer than epsilon (normalized geodesic
-  /// distance, i.e. a fraction of `diameter`) are "the same place". Paper: 0.05.
-  double epsilon = 0.05;
+  /// distance, i.e. a fraction of `diameter`) are "the same place", and no
+  /// two feature points lie closer. The paper's 0.05 is the scale of a toe:
+  /// on a paw, a hand or a head the largest extrema of f1 and f2 fall on
+  /// different toes, fingers, ears or lips, which the pose decides, so that
+  /// a limb gets no point, one or several. 0.15 is the scale of a limb: one
+  /// point per prominent component, the same count across poses far more
+  /// often (docs/results.md, "Feature points at the scale of a limb").
+  double epsilon = 0.15;
   /// v_r of eq. (2), where the search for the diameter ends starts. Eqs.
   /// (2)-(4) take v_s1 farthest from v_r and v_s2 farthest from v_s1; reebkit
   /// repeats that double sweep until the pair is mutually farthest, and runs
@@ -51,9 +57,9 @@ struct FeatureOptions {
   /// local extremum. Against the shallow extrema that a resampling adds
   /// along the ridges where two geodesic fronts meet; a protrusion shorter
   /// than the threshold (fingers, claws) is dropped with them. The default
-  /// 0.01 and its measured effect on stability and retrieval: docs/results.md,
-  /// "Sampling stability". In [0, 1].
-  double min_persistence = 0.01;
+  /// 0.03 goes with epsilon (docs/results.md, "Feature points at the scale
+  /// of a limb"; 0.01 at the paper's epsilon: "Sampling stability"). In [0, 1].
+  double min_persistence = 0.03;
   /// An extension of eq. (6), off at 0: an extremum of f1 or f2 persisting
   /// at least protrusion_persistence x diameter (a limb, not a toe) that
   /// lies more than 2 epsilon from every feature point is made one too. On

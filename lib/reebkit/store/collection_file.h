@@ -29,8 +29,10 @@ namespace reebkit {
 /// default geodesic method fast marching, whose fields the attributes now
 /// use too (the main axis, the region extents), and similarity-invariant
 /// spectra. 8: the same columns; the whole surface's spectrum (`dna_*`) on
-/// a finer copy (SpectraOptions::global_vertices).
-inline constexpr int kCollectionLayoutVersion = 8;
+/// a finer copy (SpectraOptions::global_vertices). 9: the same columns; the
+/// feature points of eq. (6) at epsilon 0.15 and min_persistence 0.03 by
+/// default (one point per prominent component), so other graphs.
+inline constexpr int kCollectionLayoutVersion = 9;
 
 /// Where the file came from: file attributes, and two groups.
 struct Provenance {
