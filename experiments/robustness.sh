@@ -63,6 +63,9 @@ step "2: sampling, SHREC07 ($per_class per class)" "$robustness" shrec-sample "$
 step "2: sampling, closed CGAL meshes" "$robustness" sampling "$work" cgal "${cgal[@]}"
 step "2: sampling, TOSCA (one pose per class)" "$robustness" sampling "$work" tosca "${tosca[@]}"
 step "3: TOSCA poses" "$robustness" tosca "$work" "$data/tosca_dev"
+mkdir -p "$work/layout8"
+step "3: TOSCA poses, the feature points of layout 8 (epsilon 0.05, persistence 0.01)" \
+  "$robustness" --option epsilon=0.05 --option min_persistence=0.01 tosca "$work/layout8" "$data/tosca_dev"
 step "6: timing" env OMP_NUM_THREADS=1 "$robustness" timing "$work" "$data/tosca_dev/michael0.off" 2000 10000 40000 100000
 printf 'total\t%s\n' "$((SECONDS - start_all))" >> "$work/steps.tsv"
 step "report and plots" /usr/bin/python3 "$source_dir/tools/figures/robustness_report.py" "$work" "$report"

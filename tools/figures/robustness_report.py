@@ -244,13 +244,16 @@ def pose_section(work, report, out):
                        f"{mean(across):.3f} |")
     out.append("")
     lines = []
-    for m in METHODS:
-        rs = [r for r in rows if r["method"] == m]
-        f = mean(float(r["forward"]) for r in rs)
-        lines.append(f"- {m}: repeatability between TOSCA poses {pct(f)} (aim >= 90 %: {holds(f >= 0.9)}); "
-                     f"node count unchanged on {pct(mean(r['nodes'] == r['reference_nodes'] for r in rs))} of the "
-                     f"poses against the first pose, on {pct(mode_share(rows, m))} against the count most common "
-                     "in the class (every pose counted, the first too).")
+    previous = work / "layout8" / "tosca_poses.csv"
+    for name, table in [("", rows)] + ([(" with layout 8's feature points (epsilon 0.05, persistence 0.01)",
+                                         read(previous))] if previous.exists() else []):
+        for m in METHODS:
+            rs = [r for r in table if r["method"] == m]
+            f = mean(float(r["forward"]) for r in rs)
+            lines.append(f"- {m}{name}: repeatability between TOSCA poses {pct(f)} (aim >= 90 %: {holds(f >= 0.9)}); "
+                         f"node count unchanged on {pct(mean(r['nodes'] == r['reference_nodes'] for r in rs))} of "
+                         f"the poses against the first pose, on {pct(mode_share(table, m))} against the count most "
+                         "common in the class (every pose counted, the first too).")
     shrec_pose = [r for r in sampling_rows(work) if r["kind"] == "pose"]
     if shrec_pose:
         out.append("`--pose` variants (two leaf components turned by 20-35 degrees, `random_pose`, seeds 1 and 2; "
