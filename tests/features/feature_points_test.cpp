@@ -257,9 +257,8 @@ TEST(FeaturePoints, SymmetricMeshesWithTiedDiameterEndsStillHaveFeaturePoints) {
 // the whole leg. The default epsilon, the scale of a limb rather than of a
 // toe, keeps one; so does protrusion_persistence at the paper's epsilon.
 TEST(FeaturePoints, ALimbWhoseTipsSplitKeepsItsPointAtTheDefaultEpsilonOrByProtrusionPersistence) {
-  const auto tosca = test::shared_dataset("tosca_dev");
-  if (!tosca) GTEST_SKIP() << "../shared/datasets/tosca_dev is not beside the checkout";
-  const Mesh cat = load_mesh(*tosca / "cat3.off").components.front();
+  REEBKIT_REQUIRE_DATASET(tosca, "tosca_dev");
+  const Mesh cat = load_mesh(tosca / "cat3.off").components.front();
   const MeshGraph g = build_mesh_graph(cat);
   const auto on_the_paw = [&](const FeaturePoints& f) {
     return std::count_if(f.vertices.begin(), f.vertices.end(), [&](Index v) { return cat.vertices(v, 2) > 140; });
@@ -291,15 +290,13 @@ TEST(FeaturePoints, ALimbWhoseTipsSplitKeepsItsPointAtTheDefaultEpsilonOrByProtr
 // counts change with the pose (horse7 has one more; michael's fingers come
 // and go with the persistence filter: results/robustness/report.md).
 TEST(FeaturePoints, EveryTOSCAPoseHasOnePointPerLimb) {
-  const auto tosca = test::shared_dataset("tosca_dev");
-  if (!tosca) GTEST_SKIP() << "../shared/datasets/tosca_dev is not beside the checkout";
+  REEBKIT_REQUIRE_DATASET(tosca, "tosca_dev");
   const std::pair<const char*, std::size_t> classes[] = {{"horse", 6}, {"michael", 5}};
   for (const auto& [name, limbs] : classes)
-    for (const auto& entry : std::filesystem::directory_iterator(*tosca)) {
-      const std::string stem = entry.path().stem().string();
-      if (entry.path().extension() != ".off" || stem.rfind(name, 0) != 0) continue;
-      const Mesh mesh = load_mesh(entry.path()).components.front();
-      EXPECT_EQ(extract_feature_points(build_mesh_graph(mesh)).vertices.size(), limbs) << stem;
+    for (const std::string& file : test::files_in(tosca)) {
+      if (file.rfind(name, 0) != 0 || std::filesystem::path(file).extension() != ".off") continue;
+      const Mesh mesh = load_mesh(tosca / file).components.front();
+      EXPECT_EQ(extract_feature_points(build_mesh_graph(mesh)).vertices.size(), limbs) << file;
     }
 }
 
