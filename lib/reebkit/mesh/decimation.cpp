@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
 #include <string>
 #include <utility>
 
@@ -32,16 +31,23 @@ std::vector<unsigned> simplify(const std::vector<unsigned>& indices, const std::
 /// a collapse can fold two triangles onto each other (a fin of zero volume
 /// hanging on one edge, which makes that edge non-manifold); both go.
 std::vector<unsigned> without_fins(const std::vector<unsigned>& indices) {
-  std::map<std::array<unsigned, 3>, int> count;
-  const auto key = [&](std::size_t t) {
+  const std::size_t n = indices.size() / 3;
+  // Each triangle's sorted corners with its index, sorted: equal vertex
+  // sets side by side.
+  std::vector<std::pair<std::array<unsigned, 3>, std::size_t>> keys(n);
+  for (std::size_t t = 0; t < n; ++t) {
     std::array<unsigned, 3> k{indices[3 * t], indices[3 * t + 1], indices[3 * t + 2]};
     std::sort(k.begin(), k.end());
-    return k;
-  };
-  for (std::size_t t = 0; t < indices.size() / 3; ++t) ++count[key(t)];
+    keys[t] = {k, t};
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<char> fin(n, 0);
+  for (std::size_t i = 0; i + 1 < n; ++i)
+    if (keys[i].first == keys[i + 1].first) fin[keys[i].second] = fin[keys[i + 1].second] = 1;
   std::vector<unsigned> out;
-  for (std::size_t t = 0; t < indices.size() / 3; ++t)
-    if (count[key(t)] == 1)
+  out.reserve(indices.size());
+  for (std::size_t t = 0; t < n; ++t)
+    if (!fin[t])
       out.insert(out.end(), indices.begin() + static_cast<std::ptrdiff_t>(3 * t),
                  indices.begin() + static_cast<std::ptrdiff_t>(3 * t + 3));
   return out;

@@ -3,7 +3,7 @@
 #include "reebkit/core/error.h"
 
 #include <Eigen/SparseCholesky>
-#include <Spectra/SymGEigsShiftSolver.h>
+#include <Spectra/SymEigsSolver.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,51 +14,44 @@ namespace reebkit {
 
 namespace {
 
-/// y = (L - shift M)^-1 x by a sparse LDL^T factorization, the operator
-/// Spectra's shift-and-invert mode asks for. L - shift M is positive
-/// definite for shift < 0 (L semi-definite, M definite), so no pivoting.
-class ShiftedSolve {
+/// The symmetric operator S = C^-1 P M P^T C^-T of the Cholesky factor
+/// P (L - shift M) P^T = C C^T (P a fill-reducing permutation): S is similar
+/// to (L - shift M)^-1 M, so its eigenvalues are 1 / (lambda - shift) for the
+/// eigenvalues lambda of L phi = lambda M phi, the largest for the lambda
+/// nearest the shift. The standard form of shift-and-invert (Ericsson and
+/// Ruhe, "The spectral transformation Lanczos method", Math. Comp. 35, 1980):
+/// one application costs the same solve and mass product as the generalized
+/// form's, but Lanczos then orthogonalizes in the Euclidean inner product,
+/// with no further mass product per inner product and norm. L - shift M is
+/// positive definite for shift < 0 (L semi-definite, M definite).
+class InvertedPencil {
  public:
   using Scalar = double;
 
-  ShiftedSolve(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
-               std::string source)
-      : stiffness_(stiffness), mass_(mass), source_(std::move(source)) {}
-
-  Eigen::Index rows() const { return stiffness_.rows(); }
-  Eigen::Index cols() const { return stiffness_.cols(); }
-
-  void set_shift(double shift) {
-    solver_.compute(stiffness_ - shift * mass_);
-    if (solver_.info() != Eigen::Success)
-      throw InvalidMeshError(source_, "the shifted Laplace-Beltrami matrix cannot be factorized");
+  InvertedPencil(const LaplaceBeltrami& operators, double shift, const std::string& source) {
+    cholesky_.compute(operators.stiffness - shift * operators.mass);
+    if (cholesky_.info() != Eigen::Success)
+      throw InvalidMeshError(source, "the shifted Laplace-Beltrami matrix cannot be factorized");
+    const auto& p = cholesky_.permutationP();
+    mass_ = operators.mass.twistedBy(p);
+    work_.resize(mass_.rows());
   }
 
-  void perform_op(const double* x, double* y) const {
-    Eigen::Map<Eigen::VectorXd>(y, rows()) = solver_.solve(Eigen::Map<const Eigen::VectorXd>(x, rows()));
-  }
-
- private:
-  const Eigen::SparseMatrix<double>& stiffness_;
-  const Eigen::SparseMatrix<double>& mass_;
-  std::string source_;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver_;
-};
-
-/// y = M x, the product Spectra's B-inner products ask for (the whole
-/// matrix is stored, so a plain product: faster than a self-adjoint view).
-class MassProduct {
- public:
-  using Scalar = double;
-  explicit MassProduct(const Eigen::SparseMatrix<double>& mass) : mass_(mass) {}
   Eigen::Index rows() const { return mass_.rows(); }
-  Eigen::Index cols() const { return mass_.cols(); }
+  Eigen::Index cols() const { return mass_.rows(); }
+
   void perform_op(const double* x, double* y) const {
-    Eigen::Map<Eigen::VectorXd>(y, rows()).noalias() = mass_ * Eigen::Map<const Eigen::VectorXd>(x, rows());
+    Eigen::Map<Eigen::VectorXd> out(y, rows());
+    work_ = Eigen::Map<const Eigen::VectorXd>(x, rows());
+    cholesky_.matrixU().solveInPlace(work_);
+    out.noalias() = mass_ * work_;
+    cholesky_.matrixL().solveInPlace(out);
   }
 
  private:
-  const Eigen::SparseMatrix<double>& mass_;
+  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> cholesky_;
+  Eigen::SparseMatrix<double> mass_;  ///< P M P^T
+  mutable Eigen::VectorXd work_;
 };
 
 }  // namespace
@@ -85,17 +78,16 @@ ShapeDna shape_dna(const Mesh& mesh, const ShapeDnaOptions& options) {
   const int margin = options.margin >= 0 ? options.margin : std::max(10, options.eigenvalues / 5);
   const Eigen::Index computed = std::min<Eigen::Index>(wanted + margin, n - 1);
   const Eigen::Index subspace = std::min<Eigen::Index>(n, std::max<Eigen::Index>(2 * computed + 1, 20));
-  ShiftedSolve op(operators.stiffness, operators.mass, source);
-  MassProduct mass_op(operators.mass);
-  Spectra::SymGEigsShiftSolver<ShiftedSolve, MassProduct, Spectra::GEigsMode::ShiftInvert> solver(op, mass_op, computed,
-                                                                                                  subspace,
-                                                                                                  options.shift);
+  InvertedPencil op(operators, options.shift, source);
+  Spectra::SymEigsSolver<InvertedPencil> solver(op, computed, subspace);
   solver.init();
-  solver.compute(Spectra::SortRule::LargestMagn, 1000, options.tolerance, Spectra::SortRule::SmallestAlge);
+  // The largest 1 / (lambda - shift), hence the smallest lambda, in
+  // decreasing order of it: increasing lambda.
+  solver.compute(Spectra::SortRule::LargestAlge, 1000, options.tolerance, Spectra::SortRule::LargestAlge);
   if (solver.info() != Spectra::CompInfo::Successful)
     throw InvalidMeshError(source, "the Laplace-Beltrami eigenvalue iterations did not converge");
-  const Eigen::VectorXd values = solver.eigenvalues();  // ascending
-  result.eigenvalues.assign(values.data() + 1, values.data() + wanted);
+  const Eigen::VectorXd inverted = solver.eigenvalues();
+  for (Eigen::Index k = 1; k < wanted; ++k) result.eigenvalues.push_back(options.shift + 1.0 / inverted(k));
   return result;
 }
 

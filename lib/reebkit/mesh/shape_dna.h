@@ -10,8 +10,9 @@
 // laplace_beltrami.h, found by Lanczos iterations with shift and invert
 // (Spectra, libspectra-dev, MPL-2.0) around a small negative shift: the
 // eigenvalues nearest the shift are the smallest, and the shifted matrix
-// L - shift M is positive definite, so a sparse Cholesky (LDL^T) factorization
-// applies it.
+// L - shift M is positive definite, so a sparse Cholesky factorization
+// C C^T of it turns the generalized problem into the standard symmetric one
+// of C^-1 M C^-T, on which Lanczos needs no mass-matrix inner products.
 #pragma once
 
 #include "reebkit/mesh/laplace_beltrami.h"
