@@ -303,7 +303,8 @@ int main(int argc, char** argv) {
         if (scores[k][c].mean() > scores[best][c].mean()) best = k;
       print_row("best on " + choose[c].name + " alone (" + describe(grid[best]) + ")", on(all, grid[best]));
     }
-    print_row("chosen in the grid: smallest worst rank, then rank sum" + guard_text + " (" + describe(grid[chosen]) + ")",
+    print_row("chosen in the grid: smallest worst rank, then rank sum" + guard_text + " (" + describe(grid[chosen]) +
+                  ")",
               on(all, grid[chosen]));
 
     // Then the weights the grid kept at their defaults, around its choice,
@@ -332,11 +333,11 @@ int main(int argc, char** argv) {
 
     std::vector<std::size_t> order(grid.size());
     for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-    std::stable_sort(order.begin(), order.end(),
-                     [&](std::size_t x, std::size_t y) { return first.before(x, y); });
-    std::printf("\nThe ten grid settings first in the order of the choice (worst rank, then rank sum), on the "
-                "choosing collections:\n\n%s",
-                header(choosing).c_str());
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return first.before(x, y); });
+    std::printf(
+        "\nThe ten grid settings first in the order of the choice (worst rank, then rank sum), on the "
+        "choosing collections:\n\n%s",
+        header(choosing).c_str());
     for (std::size_t k = 0; k < std::min<std::size_t>(10, order.size()); ++k)
       print_row(describe(grid[order[k]]) + (kept[order[k]] ? "" : " (fails the guard)"), scores[order[k]]);
     std::printf("\n<details><summary>The whole grid, in grid order</summary>\n\n%s", header(choosing).c_str());
