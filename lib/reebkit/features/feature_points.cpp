@@ -72,9 +72,29 @@ struct Sweep {
   Keep keep = Keep::Fields;
 };
 
-// Double sweep from `seed`, repeated (v_s1 <- v_s2, v_s2 <- farthest) until
-// the pair is mutually farthest or `max_extra_sweeps` more passes were spent;
-// passes that `how.keep` does not need are not run.
+// The second half of a double sweep whose first pass `e` holds (s1, s2 and
+// f1): the pass from s2, then more (v_s1 <- v_s2, v_s2 <- farthest) until the
+// pair is mutually farthest or `max_extra_sweeps` more passes were spent.
+void complete_sweep(GeodesicSolver& solver, DiameterEnds& e, int max_extra_sweeps, bool grid_ties) {
+  const DistanceField& field = solver.run({e.s2});
+  const auto farthest = [&] { return grid_ties ? grid_farthest(field.distance) : field.farthest; };
+  Index back = farthest();  // farthest from s2
+  e.f2 = field.distance;
+  ++e.passes;
+  for (int extra = 0; extra < max_extra_sweeps && back != e.s1; ++extra) {
+    // d(s2, back) > d(s1, s2): the pair moves outward along the diameter.
+    e.s1 = e.s2;
+    e.s2 = back;
+    e.f1.swap(e.f2);
+    solver.run({e.s2});
+    back = farthest();
+    e.f2 = field.distance;
+    ++e.passes;
+  }
+}
+
+// Double sweep from `seed` (complete_sweep); passes that `how.keep` does
+// not need are not run.
 DiameterEnds find_diameter_ends(GeodesicSolver& solver, Index seed, int max_extra_sweeps, Sweep how = {}) {
   DiameterEnds e;
   const DistanceField& field = solver.run({seed});
@@ -93,21 +113,7 @@ DiameterEnds find_diameter_ends(GeodesicSolver& solver, Index seed, int max_extr
   }
   e.s2 = farthest();
   e.f1 = field.distance;
-  if (how.keep != Keep::Fields) return e;
-  solver.run({e.s2});
-  Index back = farthest();  // farthest from s2
-  e.f2 = field.distance;
-  ++e.passes;
-  for (int extra = 0; extra < max_extra_sweeps && back != e.s1; ++extra) {
-    // d(s2, back) > d(s1, s2): the pair moves outward along the diameter.
-    e.s1 = e.s2;
-    e.s2 = back;
-    e.f1.swap(e.f2);
-    solver.run({e.s2});
-    back = farthest();
-    e.f2 = field.distance;
-    ++e.passes;
-  }
+  if (how.keep == Keep::Fields) complete_sweep(solver, e, max_extra_sweeps, how.grid_ties);
   return e;
 }
 
@@ -233,8 +239,11 @@ FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOption
       // by rounding only, makes the same choice.
       const double unit = kTieGrid * ends.length();
       if (!(std::round(other.length() / unit) > std::round(ends.length() / unit))) continue;
-      ends = find_diameter_ends(solver, seed, options.max_extra_sweeps, {true, true});
-      passes += ends.passes;
+      // The sweep from the seed goes on from its first pass, already run.
+      other.passes = 0;
+      complete_sweep(solver, other, options.max_extra_sweeps, true);
+      passes += other.passes;
+      ends = std::move(other);
       add_ends(to_ends, ends);
     }
     ends.passes = passes;
