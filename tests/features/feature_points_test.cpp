@@ -140,6 +140,21 @@ TEST(FeaturePoints, TheSearchSpendsOnlyThePassesItReads) {
   EXPECT_EQ(extract_feature_points(g, options).sweeps, 3);
 }
 
+// On the six-armed star vertex 0's sweep ends on two arms that are not the
+// farthest apart, and the farthest-point seed finds a longer pair: its sweep
+// goes on from the seed's own pass (its f1), so it costs one pass more, f2
+// (the seed is mutually farthest with its end): 1 + 2 + 1 + 1.
+TEST(FeaturePoints, ALongerSeedsSweepGoesOnFromItsOwnPass) {
+  const MeshGraph g = build_mesh_graph(make_star(star(6)));
+  FeatureOptions options;
+  const FeaturePoints with_seed = extract_feature_points(g, options);
+  options.extra_seeds = 0;
+  const FeaturePoints without = extract_feature_points(g, options);
+  ASSERT_NE(std::minmax(with_seed.source1, with_seed.source2), std::minmax(without.source1, without.source2));
+  EXPECT_GT(with_seed.diameter, without.diameter);
+  EXPECT_EQ(with_seed.sweeps, 1 + 2 + 1 + 1);
+}
+
 // Under either method, in its own metric; f1 and f2 are the fields from
 // the two ends.
 TEST(FeaturePoints, DiameterEndsAreMutuallyFarthestFeaturePoints) {
