@@ -83,6 +83,11 @@ def sampling_rows(work, failed=False):
     return rows
 
 
+def three_or_more(rows):
+    """The rows whose original has three or more feature points."""
+    return [r for r in rows if int(r["features"]) > 2]
+
+
 def summarize(rows):
     n = len(rows)
     return {
@@ -167,9 +172,8 @@ def sampling_section(work, report, out):
     for m in METHODS:
         d, r1 = aim("decimate", 0.5, m), aim("remesh", 1.0, m)
         remeshed = summarize([r for k, v in table.items() if k[0] == "remesh" and k[2] == m for r in v])
-        d3, r3 = ([r for r in table[(kind, strength, m)] if int(r["features"]) > 2]
-                  for kind, strength in [("decimate", 0.5), ("remesh", 1.0)])
-        d3, r3 = summarize(d3)["forward"], summarize(r3)["forward"]
+        d3 = summarize(three_or_more(table[("decimate", 0.5, m)]))["forward"]
+        r3 = summarize(three_or_more(table[("remesh", 1.0, m)]))["forward"]
         lines.append(f"- {m}: repeatability at 50 % decimation {pct(d['forward'])} (aim >= 90 %: "
                      f"{holds(d['forward'] >= 0.9)}), at 1x remeshing {pct(r1['forward'])} "
                      f"({holds(r1['forward'] >= 0.9)}); on the meshes with three or more feature points "
@@ -191,7 +195,7 @@ def sampling_section(work, report, out):
         for m in METHODS:
             rs = table[(kind, strength, m)]
             for name, part in [("2 points", [r for r in rs if int(r["features"]) <= 2]),
-                               ("3 or more", [r for r in rs if int(r["features"]) > 2])]:
+                               ("3 or more", three_or_more(rs))]:
                 s = summarize(part)
                 same = mean(r["features"] == r["variant_features"] for r in part)
                 out.append(f"| {kind} {strength:g} | {m} | {name} | {s['n']} | {pct(s['forward'])} | {pct(same)} | "

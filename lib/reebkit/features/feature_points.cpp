@@ -75,12 +75,13 @@ struct Sweep {
 // The second half of a double sweep whose first pass `e` holds (s1, s2 and
 // f1): the pass from s2, then more (v_s1 <- v_s2, v_s2 <- farthest) until the
 // pair is mutually farthest or `max_extra_sweeps` more passes were spent.
-void complete_sweep(GeodesicSolver& solver, DiameterEnds& e, int max_extra_sweeps, bool grid_ties) {
+// Returns the passes it ran.
+int complete_sweep(GeodesicSolver& solver, DiameterEnds& e, int max_extra_sweeps, bool grid_ties) {
   const DistanceField& field = solver.run({e.s2});
   const auto farthest = [&] { return grid_ties ? grid_farthest(field.distance) : field.farthest; };
   Index back = farthest();  // farthest from s2
   e.f2 = field.distance;
-  ++e.passes;
+  int passes = 1;
   for (int extra = 0; extra < max_extra_sweeps && back != e.s1; ++extra) {
     // d(s2, back) > d(s1, s2): the pair moves outward along the diameter.
     e.s1 = e.s2;
@@ -89,8 +90,9 @@ void complete_sweep(GeodesicSolver& solver, DiameterEnds& e, int max_extra_sweep
     solver.run({e.s2});
     back = farthest();
     e.f2 = field.distance;
-    ++e.passes;
+    ++passes;
   }
+  return passes;
 }
 
 // Double sweep from `seed` (complete_sweep); passes that `how.keep` does
@@ -113,7 +115,7 @@ DiameterEnds find_diameter_ends(GeodesicSolver& solver, Index seed, int max_extr
   }
   e.s2 = farthest();
   e.f1 = field.distance;
-  if (how.keep == Keep::Fields) complete_sweep(solver, e, max_extra_sweeps, how.grid_ties);
+  if (how.keep == Keep::Fields) e.passes += complete_sweep(solver, e, max_extra_sweeps, how.grid_ties);
   return e;
 }
 
@@ -240,9 +242,7 @@ FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOption
       const double unit = kTieGrid * ends.length();
       if (!(std::round(other.length() / unit) > std::round(ends.length() / unit))) continue;
       // The sweep from the seed goes on from its first pass, already run.
-      other.passes = 0;
-      complete_sweep(solver, other, options.max_extra_sweeps, true);
-      passes += other.passes;
+      passes += complete_sweep(solver, other, options.max_extra_sweeps, true);
       ends = std::move(other);
       add_ends(to_ends, ends);
     }
