@@ -40,8 +40,8 @@ struct PinnedGraph {
 // when the graph or the attributes change on purpose.
 constexpr PinnedGraph kPinned[] = {
     {"anchor.off", 15, 2, 4, 0x6448063963ce503aull}, {"bunny.off", 5, 3, 0, 0x507edd13fe9e0cc3ull},
-    {"cactus.off", 7, 4, 0, 0x32110a8f6c8a58d6ull},  {"cow.off", 17, 9, 0, 0xcc2a6f33d87ce683ull},
-    {"eight.off", 9, 2, 2, 0x5dbd27c89b39dfeeull},   {"elk.off", 14, 6, 1, 0xd6940a64069a6eb2ull},
+    {"cactus.off", 7, 4, 0, 0x6afb4040b5353a8bull},  {"cow.off", 17, 9, 0, 0x493aff8fc4f9d3c8ull},
+    {"eight.off", 9, 2, 2, 0x5dbd27c89b39dfeeull},   {"elk.off", 14, 6, 1, 0x40fcc23db3574ecaull},
     {"hand.off", 3, 2, 0, 0x8c8605dcea080c48ull},    {"helmet.off", 12, 2, 3, 0x633e8b26d1c4002cull},
 };
 

@@ -5,6 +5,7 @@
 #include "reebkit/geodesic/dijkstra.h"
 #include "reebkit/geodesic/fast_marching.h"
 #include "reebkit/mesh/load_mesh.h"
+#include "reebkit/mesh/remeshing.h"
 #include "reebkit/mesh/resampling.h"
 #include "reebkit/mesh/shapes.h"
 #include "reebkit/mesh/transform.h"
@@ -313,6 +314,90 @@ TEST(FeaturePoints, EveryTOSCAPoseHasOnePointPerLimb) {
       const Mesh mesh = load_mesh(tosca / file).components.front();
       EXPECT_EQ(extract_feature_points(build_mesh_graph(mesh)).vertices.size(), limbs) << file;
     }
+}
+
+// FeatureSite::Midpoint: where the extremum of f1 and the extremum of f2
+// that eq. (6) joins fall apart (the round tips of the cactus's arms), the
+// feature point lies halfway between them, within an edge; where they
+// coincide it is that vertex. Either way eq. (6) holds: both within epsilon.
+TEST(FeaturePoints, AMidpointLiesHalfwayBetweenItsTwoExtrema) {
+  const Mesh mesh = load_mesh(test::embedded_dataset_dir() / "cactus.off").components.front();
+  const MeshGraph g = build_mesh_graph(mesh);
+  const FeaturePoints fp = extract_feature_points(g);
+  FeatureOptions on_extrema;
+  on_extrema.site = FeatureSite::Extremum;
+  const FeaturePoints extrema = extract_feature_points(g, on_extrema);
+  ASSERT_EQ(fp.vertices.size(), extrema.vertices.size());
+  EXPECT_NE(fp.vertices, extrema.vertices);  // some pair falls apart on this mesh
+  const double edge = *std::max_element(g.length.begin(), g.length.end());
+  int halfway = 0;
+  for (const Index m : fp.vertices) {
+    const DistanceField from_m = fast_marching(g, m);
+    const auto nearest = [&](const std::vector<Index>& e) {
+      return *std::min_element(e.begin(), e.end(),
+                               [&](Index x, Index y) { return from_m.distance[x] < from_m.distance[y]; });
+    };
+    const Index a = nearest(fp.extrema1), b = nearest(fp.extrema2);
+    SCOPED_TRACE("feature point " + std::to_string(m));
+    EXPECT_LT(from_m.distance[a], fp.diameter * 0.15);
+    EXPECT_LT(from_m.distance[b], fp.diameter * 0.15);
+    if (a == b) {
+      EXPECT_EQ(m, a);
+      continue;
+    }
+    ++halfway;
+    const double ab = fast_marching(g, a).distance[b];
+    EXPECT_NEAR(from_m.distance[a], from_m.distance[b], edge);
+    EXPECT_LE(from_m.distance[a] + from_m.distance[b], ab + 2 * edge);
+  }
+  EXPECT_GE(halfway, 1);
+}
+
+// Section 4.1.2, figure 5: the feature points are robust to a new sampling.
+// On the SHREC07 teddy 164 the arms are round stubs; the largest extrema of
+// f1 and f2 on each fall apart, and the extremum that eq. (6)'s greedy order
+// takes switches with the triangulation. The midpoint of the two stays:
+// after a remeshing at the same vertex count every feature point has one of
+// the copy within 0.05 x the diameter (the robustness suite's repeatability),
+// while two of the extrema move farther (measured, results/robustness).
+TEST(FeaturePoints, MidpointsStayOnRoundTipsWhenTheSurfaceIsRemeshed) {
+  REEBKIT_REQUIRE_DATASET(shrec, "shrec07_watertight");
+  const Mesh teddy = load_mesh(shrec / "164.off").components.front();
+  RemeshOptions same_count;
+  same_count.target_vertices = teddy.num_vertices();
+  const MeshVariant copy = remesh(teddy, same_count);
+  const MeshGraph g = build_mesh_graph(teddy), h = build_mesh_graph(copy.mesh);
+  const auto moved = [&](FeatureSite site) {
+    FeatureOptions options;
+    options.site = site;
+    const FeaturePoints original = extract_feature_points(g, options), remeshed = extract_feature_points(h, options);
+    EXPECT_EQ(remeshed.vertices.size(), original.vertices.size());
+    std::vector<Index> mapped;
+    for (const Index v : remeshed.vertices) mapped.push_back(copy.original_vertex[static_cast<std::size_t>(v)]);
+    const DistanceField near = fast_marching(g, mapped);
+    return std::count_if(original.vertices.begin(), original.vertices.end(),
+                         [&](Index v) { return !(near.distance[v] < 0.05 * original.diameter); });
+  };
+  EXPECT_EQ(moved(FeatureSite::Midpoint), 0);
+  EXPECT_GE(moved(FeatureSite::Extremum), 2);
+}
+
+TEST(FeaturePoints, MidpointsAreInvariantToRotationTranslationAndScale) {
+  const Mesh mesh = load_mesh(test::embedded_dataset_dir() / "cactus.off").components.front();
+  const auto reference = extract_feature_points(build_mesh_graph(mesh)).vertices;
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    Similarity t;
+    t.rotation = random_rotation(seed);
+    t.scale = std::pow(10.0, static_cast<double>(seed) - 2.5);  // 0.03 .. 30
+    t.translation = Vec3(-4.0, 9.0, 2e2) * static_cast<double>(seed);
+    EXPECT_EQ(extract_feature_points(build_mesh_graph(transformed(mesh, t))).vertices, reference) << "seed " << seed;
+  }
+}
+
+TEST(FeaturePoints, FeatureSiteNamesRoundTrip) {
+  for (const FeatureSite site : {FeatureSite::Extremum, FeatureSite::Midpoint})
+    EXPECT_EQ(parse_feature_site(feature_site_name(site)), site);
+  EXPECT_THROW(parse_feature_site("centre"), InvalidArgument);
 }
 
 TEST(FeaturePoints, RejectsBadInput) {

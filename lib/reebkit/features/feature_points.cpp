@@ -1,6 +1,7 @@
 #include "reebkit/features/feature_points.h"
 
 #include "reebkit/core/error.h"
+#include "reebkit/core/named_values.h"
 #include "reebkit/features/critical_points.h"
 #include "reebkit/features/persistence.h"
 #include "reebkit/geodesic/dijkstra.h"
@@ -17,6 +18,10 @@ namespace reebkit {
 namespace {
 
 constexpr Index kCanonicalSeed = 0;
+
+constexpr NamedValues<FeatureSite, 2> kFeatureSiteNames{"feature site",
+                                                        {{{FeatureSite::Extremum, "extremum"},
+                                                          {FeatureSite::Midpoint, "midpoint"}}}};
 
 // A mutually farthest (or best found) pair and the distance fields from it.
 struct DiameterEnds {
@@ -181,7 +186,38 @@ void add_protrusion_tips(const MeshGraph& graph, const FeatureOptions& options, 
   }
 }
 
+// FeatureSite::Midpoint: the vertex halfway between a and b, within `reach`
+// of both (at least d(a, b)): the smallest max(d(a, w), d(b, w)), then the
+// smallest |d(a, w) - d(b, w)|, both counted on the tie grid `unit` (so that
+// a similar copy makes the same choice), then, as eq. (6)'s greedy order,
+// the more extreme vertex (larger f1 + f2, on the grid), then the id: a and
+// b a single edge apart, with no vertex between, keep the more extreme.
+Index geodesic_midpoint(GeodesicSolver& solver, Index a, Index b, double reach, double unit,
+                        const std::vector<double>& f1, const std::vector<double>& f2) {
+  const GeodesicOptions ball{reach};
+  const std::vector<double> from_a = solver.run({a}, ball).distance;
+  const DistanceField& from_b = solver.run({b}, ball);
+  Index best = kInvalidIndex;
+  std::tuple<double, double, double, Index> best_key;
+  for (const Index w : solver.settled()) {
+    const auto k = static_cast<std::size_t>(w);
+    const double x = from_a[k], y = from_b.distance[k];
+    if (!(x <= reach)) continue;
+    const auto key =
+        std::make_tuple(std::round(std::max(x, y) / unit), std::round(std::abs(x - y) / unit), -(f1[k] + f2[k]), w);
+    if (best == kInvalidIndex || key < best_key) {
+      best_key = key;
+      best = w;
+    }
+  }
+  return best;
+}
+
 }  // namespace
+
+const char* feature_site_name(FeatureSite site) { return kFeatureSiteNames.name(site); }
+
+FeatureSite parse_feature_site(const std::string& name) { return kFeatureSiteNames.parse(name); }
 
 FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOptions& options) {
   const std::unique_ptr<GeodesicSolver> solver = make_geodesic_solver(graph, options.geodesic);
@@ -283,8 +319,16 @@ FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOption
   const double radius = options.epsilon * out.diameter, radius_units = std::round(options.epsilon / kTieGrid);
   GeodesicOptions near{radius};
   near.separate_sources = true;  // the extrema are points
-  const std::vector<double> to_e1 = snapped(solver.run(out.extrema1, near).distance);
-  const std::vector<double> to_e2 = snapped(solver.run(out.extrema2, near).distance);
+  // The distance to the nearest extremum of each function, and which it is.
+  std::vector<double> to_e1, to_e2;
+  std::vector<Index> nearest_e1, nearest_e2;
+  const auto reach = [&](const std::vector<Index>& sources, std::vector<double>& to, std::vector<Index>& nearest) {
+    const DistanceField& field = solver.run(sources, near);
+    to = snapped(field.distance);
+    nearest = field.nearest_source;
+  };
+  reach(out.extrema1, to_e1, nearest_e1);
+  reach(out.extrema2, to_e2, nearest_e2);
   std::vector<Index> candidates;
   std::set_union(out.extrema1.begin(), out.extrema1.end(), out.extrema2.begin(), out.extrema2.end(),
                  std::back_inserter(candidates));
@@ -301,10 +345,21 @@ FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOption
            std::make_tuple(at(to_e1, b) + at(to_e2, b), -(at(f1, b) + at(f2, b)), b);
   });
   std::vector<double> to_features(static_cast<std::size_t>(n), std::numeric_limits<double>::infinity());
+  const auto partner = [&](const std::vector<Index>& of, const std::vector<Index>& nearest, Index v) {
+    return of[static_cast<std::size_t>(nearest[static_cast<std::size_t>(v)])];
+  };
   for (const Index v : candidates) {
     if (at(to_features, v) <= radius) continue;
-    out.vertices.push_back(v);
-    const DistanceField& ball = solver.run({v}, near);
+    Index site = v;
+    if (options.site == FeatureSite::Midpoint) {
+      // v is one of the pair (its own nearest extremum); d(a, b) is at most
+      // d(a, v) + d(v, b), plus the grid's rounding.
+      const Index a = partner(out.extrema1, nearest_e1, v), b = partner(out.extrema2, nearest_e2, v);
+      if (a != b) site = geodesic_midpoint(solver, a, b, (at(to_e1, v) + at(to_e2, v) + 2) * unit, unit, f1, f2);
+      if (at(to_features, site) <= radius) continue;
+    }
+    out.vertices.push_back(site);
+    const DistanceField& ball = solver.run({site}, near);
     for (const Index w : solver.settled())
       to_features[static_cast<std::size_t>(w)] =
           std::min(at(to_features, w), ball.distance[static_cast<std::size_t>(w)]);

@@ -6,9 +6,27 @@
 #include "reebkit/geodesic/geodesic_solver.h"
 #include "reebkit/mesh/mesh_graph.h"
 
+#include <string>
 #include <vector>
 
 namespace reebkit {
+
+/// Where the feature point of a pair of extrema that eq. (6) joins lies.
+enum class FeatureSite {
+  /// On the candidate extremum itself (of f1 or of f2, the one the greedy
+  /// order of eq. (6) takes): reebkit's rule before layout 10.
+  Extremum,
+  /// Halfway between the pair: the extremum of f1 and the extremum of f2
+  /// nearest the candidate. On a round tip (a stubby arm, an ear) the two
+  /// fall apart and the greedy order takes one or the other as the sampling
+  /// decides; their midpoint moves only as much as each of them does.
+  Midpoint,
+};
+
+/// "extremum" or "midpoint": the names of the option --feature-site.
+const char* feature_site_name(FeatureSite site);
+/// Inverse of feature_site_name; throws InvalidArgument naming the accepted values.
+FeatureSite parse_feature_site(const std::string& name);
 
 struct FeatureOptions {
   /// epsilon of eq. (6): two extrema closer than epsilon (normalized geodesic
@@ -67,6 +85,12 @@ struct FeatureOptions {
   /// toes, more than epsilon apart, and the relaxed intersection then keeps
   /// no point for the whole limb. In [0, 1].
   double protrusion_persistence = 0.0;
+  /// Where a feature point of eq. (6) lies: eq. (6) asks only that an
+  /// extremum of f1 and one of f2 lie within epsilon of it, so both sites
+  /// satisfy it. Midpoint (the default since layout 10) keeps the points of
+  /// round tips in place under resampling (docs/results.md, "Feature points
+  /// halfway between their two extrema").
+  FeatureSite site = FeatureSite::Midpoint;
 };
 
 /// Geodesic distances closer than this fraction of the diameter count as
@@ -75,7 +99,8 @@ inline constexpr double kTieGrid = 1e-9;
 
 struct FeaturePoints {
   /// F of eq. (6), in selection order: pairs of coinciding extrema first,
-  /// then by how far apart the E1 and E2 extrema of a candidate lie.
+  /// then by how far apart the E1 and E2 extrema of a candidate lie; each
+  /// at its FeatureOptions::site.
   std::vector<Index> vertices;
   Index source1 = kInvalidIndex;  ///< v_s1, origin of f1 (eq. 2)
   Index source2 = kInvalidIndex;  ///< v_s2, origin of f2 (eq. 4)

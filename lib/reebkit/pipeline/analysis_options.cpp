@@ -11,6 +11,10 @@ namespace reebkit {
 static OptionValue option_value_of(Geodesic method) { return std::string(geodesic_name(method)); }
 static OptionValue option_value_of(LevelLines lines) { return std::string(level_lines_name(lines)); }
 static OptionValue option_value_of(Leaves leaves) { return std::string(leaves_name(leaves)); }
+static OptionValue option_value_of(FeatureSite site) { return std::string(feature_site_name(site)); }
+static void set_from_option(const OptionValue& value, FeatureSite& site) {
+  site = parse_feature_site(std::get<std::string>(value));
+}
 static void set_from_option(const OptionValue& value, Geodesic& method) {
   method = parse_geodesic(std::get<std::string>(value));
 }
@@ -57,6 +61,10 @@ const std::vector<AnalysisOptionField>& analysis_option_fields() {
             "also make a feature point of every extremum of f1 or f2 persisting at least this fraction of the "
             "diameter that lies more than 2 epsilon from every feature point (0: off, eq. 6 alone)",
             [](auto& o) -> auto& { return o.features.protrusion_persistence; }, OptionRange{0, 1}),
+      field("feature_site", "where the feature point of a pair of extrema of eq. (6) lies: midpoint (halfway "
+            "between the extremum of f1 and that of f2, the default: steadier on round tips) or extremum (on the "
+            "extremum the greedy order takes, layout 9 and before)",
+            [](auto& o) -> auto& { return o.features.site; }),
       field("level_lines", "what a level line is: contour (the connected curves of the propagation front, exact "
             "topology) or paper (Definition 6: connected sets of candidate vertices)",
             [](auto& o) -> auto& { return o.reeb.level_lines; }),
@@ -79,13 +87,15 @@ std::vector<NamedOption> named_analysis_options(const AnalysisOptions& options) 
 AnalysisOptions analysis_options_from(const std::vector<NamedOption>& named) {
   AnalysisOptions options;
   // Files written before an option existed were analysed as it was then:
-  // level_lines with Definition 6, leaves with every termination.
+  // level_lines with Definition 6, leaves with every termination, the
+  // feature points on their extrema.
   const auto lacks = [&named](const char* name) {
     return !named.empty() &&
            std::none_of(named.begin(), named.end(), [name](const NamedOption& option) { return option.name == name; });
   };
   if (lacks("level_lines")) options.reeb.level_lines = LevelLines::Paper;
   if (lacks("leaves")) options.reeb.leaves = Leaves::Propagation;
+  if (lacks("feature_site")) options.features.site = FeatureSite::Extremum;
   for (const NamedOption& option : named) {
     const AnalysisOptionField* f = find_option(analysis_option_fields(), option.name);
     if (!f) throw InvalidArgument("unknown analysis option '" + option.name + "'");

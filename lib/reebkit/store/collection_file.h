@@ -31,8 +31,10 @@ namespace reebkit {
 /// spectra. 8: the same columns; the whole surface's spectrum (`dna_*`) on
 /// a finer copy (SpectraOptions::global_vertices). 9: the same columns; the
 /// feature points of eq. (6) at epsilon 0.15 and min_persistence 0.03 by
-/// default (one point per prominent component), so other graphs.
-inline constexpr int kCollectionLayoutVersion = 9;
+/// default (one point per prominent component), so other graphs. 10: the
+/// same columns; each feature point halfway between its extrema of f1 and
+/// f2 (FeatureSite::Midpoint) by default, so other graphs.
+inline constexpr int kCollectionLayoutVersion = 10;
 
 /// Where the file came from: file attributes, and two groups.
 struct Provenance {
