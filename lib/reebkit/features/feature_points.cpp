@@ -187,13 +187,15 @@ void add_protrusion_tips(const MeshGraph& graph, const FeatureOptions& options, 
 }
 
 // FeatureSite::Midpoint: the vertex halfway between a and b, within `reach`
-// of both (at least d(a, b)): the smallest max(d(a, w), d(b, w)), then the
+// of both (about d(a, b)): the smallest max(d(a, w), d(b, w)), then the
 // smallest |d(a, w) - d(b, w)|, both counted on the tie grid `unit` (so that
 // a similar copy makes the same choice), then, as eq. (6)'s greedy order,
 // the more extreme vertex (larger f1 + f2, on the grid), then the id: a and
 // b a single edge apart, with no vertex between, keep the more extreme.
+// `fallback` where no vertex is within reach of both (fast marching is not
+// symmetric: d(a, b) from a may exceed it from b).
 Index geodesic_midpoint(GeodesicSolver& solver, Index a, Index b, double reach, double unit,
-                        const std::vector<double>& f1, const std::vector<double>& f2) {
+                        const std::vector<double>& f1, const std::vector<double>& f2, Index fallback) {
   const GeodesicOptions ball{reach};
   const std::vector<double> from_a = solver.run({a}, ball).distance;
   const DistanceField& from_b = solver.run({b}, ball);
@@ -210,7 +212,7 @@ Index geodesic_midpoint(GeodesicSolver& solver, Index a, Index b, double reach, 
       best = w;
     }
   }
-  return best;
+  return best == kInvalidIndex ? fallback : best;
 }
 
 }  // namespace
@@ -355,7 +357,7 @@ FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOption
       // v is one of the pair (its own nearest extremum); d(a, b) is at most
       // d(a, v) + d(v, b), plus the grid's rounding.
       const Index a = partner(out.extrema1, nearest_e1, v), b = partner(out.extrema2, nearest_e2, v);
-      if (a != b) site = geodesic_midpoint(solver, a, b, (at(to_e1, v) + at(to_e2, v) + 2) * unit, unit, f1, f2);
+      if (a != b) site = geodesic_midpoint(solver, a, b, (at(to_e1, v) + at(to_e2, v) + 2) * unit, unit, f1, f2, v);
       if (at(to_features, site) <= radius) continue;
     }
     out.vertices.push_back(site);
