@@ -3,7 +3,8 @@
 // michael19 share one vertex numbering) given different proportions with
 // deform/proportions.h, the same person in every pose.
 //
-// The parts are planned once on the first pose (the lowest number): its
+// The parts are planned once on the first pose (the lowest number), with
+// the analysis of layout 9 whatever the defaults (planning_analysis): its
 // limbs, the smallest components of the Reeb graph holding at least 5 % of
 // the surface (michael: both legs, both arms, the head with the top of the
 // chest), and its torso, the largest region in no limb. A person changes 2
@@ -180,6 +181,21 @@ reebkit::ProportionPlan original_vertices_only(reebkit::ProportionPlan plan, Ind
 
 reebkit::Mesh load(const fs::path& path) { return std::move(reebkit::load_mesh(path).components.front()); }
 
+// The analysis the parts are planned on, pinned to layout 9's defaults
+// (fast marching, epsilon 0.15, persistence 0.03, the feature points on
+// their extrema, contour level lines, leaves at the maxima of f_q): a
+// benchmark must not move with the defaults of the method it measures.
+reebkit::AnalysisOptions planning_analysis() {
+  reebkit::AnalysisOptions o;
+  o.features.geodesic = reebkit::Geodesic::FastMarching;
+  o.features.epsilon = 0.15;
+  o.features.min_persistence = 0.03;
+  o.features.site = reebkit::FeatureSite::Extremum;
+  o.reeb.level_lines = reebkit::LevelLines::Contour;
+  o.reeb.leaves = reebkit::Leaves::Maxima;
+  return o;
+}
+
 int run(const fs::path& tosca, const fs::path& out, const std::string& shape, int people, int poses, Factors factors,
         std::uint64_t seed, fs::path cla) {
   const std::vector<fs::path> files = pose_files(tosca, shape);
@@ -191,7 +207,7 @@ int run(const fs::path& tosca, const fs::path& out, const std::string& shape, in
   fs::create_directories(out);
   if (cla.empty()) cla = out / "body-shape.cla";
   reebkit::Timer timer;
-  const reebkit::MeshAnalysis reference = reebkit::analyze_mesh(load(files.front()));
+  const reebkit::MeshAnalysis reference = reebkit::analyze_mesh(load(files.front()), planning_analysis());
   const std::vector<Part> parts = body_parts(reference.reeb);
   if (parts.size() < static_cast<std::size_t>(kMinChanges))
     throw reebkit::Error(files.front().string() + ": fewer than " + std::to_string(kMinChanges) + " body parts");
