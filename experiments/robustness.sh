@@ -63,9 +63,17 @@ step "2: sampling, SHREC07 ($per_class per class)" "$robustness" shrec-sample "$
 step "2: sampling, closed CGAL meshes" "$robustness" sampling "$work" cgal "${cgal[@]}"
 step "2: sampling, TOSCA (one pose per class)" "$robustness" sampling "$work" tosca "${tosca[@]}"
 step "3: TOSCA poses" "$robustness" tosca "$work" "$data/tosca_dev"
-mkdir -p "$work/layout8"
-step "3: TOSCA poses, the feature points of layout 8 (epsilon 0.05, persistence 0.01)" \
-  "$robustness" --option epsilon=0.05 --option min_persistence=0.01 tosca "$work/layout8" "$data/tosca_dev"
+# The defaults of earlier layouts, side by side with today's in the report.
+mkdir -p "$work/layout8" "$work/layout9"
+step "3: TOSCA poses, the feature points of layout 8 (epsilon 0.05, persistence 0.01, on the extrema)" \
+  "$robustness" --option epsilon=0.05 --option min_persistence=0.01 --option feature_site=extremum \
+  tosca "$work/layout8" "$data/tosca_dev"
+layout9=("$robustness" --option feature_site=extremum)
+step "2, 3: the feature points of layout 9 (on the extrema): SHREC07" \
+  "${layout9[@]}" shrec-sample "$work/layout9" "$shrec" "$cla" "$per_class"
+step "2, 3: the feature points of layout 9: CGAL" "${layout9[@]}" sampling "$work/layout9" cgal "${cgal[@]}"
+step "2, 3: the feature points of layout 9: TOSCA" "${layout9[@]}" sampling "$work/layout9" tosca "${tosca[@]}"
+step "2, 3: the feature points of layout 9: TOSCA poses" "${layout9[@]}" tosca "$work/layout9" "$data/tosca_dev"
 step "6: timing" env OMP_NUM_THREADS=1 "$robustness" timing "$work" "$data/tosca_dev/michael0.off" 2000 10000 40000 100000
 printf 'total\t%s\n' "$((SECONDS - start_all))" >> "$work/steps.tsv"
 step "report and plots" /usr/bin/python3 "$source_dir/tools/figures/robustness_report.py" "$work" "$report"

@@ -210,6 +210,28 @@ def sampling_section(work, report, out):
                "graph. No selection rule can pin a diameter end that the surface itself does not single out; the "
                "retrieval of these shapes rests on the whole-surface terms of the matching (g_s, g_g: "
                "docs/method.md), which do not depend on the ends.\n")
+    layout9 = [r for r in sampling_rows(work / "layout9") if r["kind"] != "pose"]
+    if layout9:
+        out.append("*Old and new*: each feature point halfway between the extremum of f1 and the extremum of f2 "
+                   "that eq. (6) joins (`--feature-site midpoint`, layout 10), against the point on the extremum "
+                   "that the greedy order takes (`--feature-site extremum`, layout 9), fast marching, the same "
+                   "variants. On a round tip the two extrema fall apart and the one taken switches with the "
+                   "sampling; their midpoint moves only as each of them does.\n")
+        out.append("| perturbation | originals | layout 9: forward | same nodes | layout 10: forward | same nodes |")
+        out.append("|---|---|---:|---:|---:|---:|")
+        old = defaultdict(list)
+        for r in layout9:
+            old[(r["kind"], float(r["strength"]), r["method"])].append(r)
+        for kind, strength in [("decimate", 0.5), ("remesh", 1.0)]:
+            for name, pick in [("all", lambda rs: rs), ("3 or more", three_or_more)]:
+                a, b = summarize(pick(old[(kind, strength, "fmm")])), summarize(pick(table[(kind, strength, "fmm")]))
+                out.append(f"| {kind} {strength:g} | {name} | {pct(a['forward'])} | {pct(a['nodes'])} | "
+                           f"{pct(b['forward'])} | {pct(b['nodes'])} |")
+        a = summarize([r for r in layout9 if r["method"] == "fmm"])
+        b = summarize([r for r in rows if r["method"] == "fmm"])
+        out.append(f"| every perturbation | all | {pct(a['forward'])} | {pct(a['nodes'])} | {pct(b['forward'])} | "
+                   f"{pct(b['nodes'])} |")
+        out.append("")
 
 
 def mode_share(rows, method):
@@ -253,9 +275,10 @@ def pose_section(work, report, out):
                        f"{mean(across):.3f} |")
     out.append("")
     lines = []
-    previous = work / "layout8" / "tosca_poses.csv"
-    for name, table in [("", rows)] + ([(" with layout 8's feature points (epsilon 0.05, persistence 0.01)",
-                                         read(previous))] if previous.exists() else []):
+    earlier = [(" with layout 9's feature points (on the extrema)", work / "layout9" / "tosca_poses.csv"),
+               (" with layout 8's feature points (epsilon 0.05, persistence 0.01, on the extrema)",
+                work / "layout8" / "tosca_poses.csv")]
+    for name, table in [("", rows)] + [(n, read(p)) for n, p in earlier if p.exists()]:
         for m in METHODS:
             rs = [r for r in table if r["method"] == m]
             f = mean(float(r["forward"]) for r in rs)
@@ -405,7 +428,9 @@ def main():
     out.append("Defaults (docs/method.md): geodesic distances by fast marching (`fmm`; the diameter search on "
                "Dijkstra passes, its last sweep in fast marching), epsilon 0.15 and persistence filter 0.03 (one "
                "feature point per limb; the paper's 0.05 and reebkit's 0.01 before layout 9: docs/results.md, "
-               "\"Feature points at the scale of a limb\", compares them), up to 3 extra sweeps, leaves only at the maxima of f_q (`--leaves maxima`: the pits of the propagation "
+               "\"Feature points at the scale of a limb\", compares them), each feature point halfway between the "
+               "extremum of f1 and the extremum of f2 that eq. (6) joins (`--feature-site midpoint`; on the extremum "
+               "before layout 10: sections 2 and 3 compare them), up to 3 extra sweeps, leaves only at the maxima of f_q (`--leaves maxima`: the pits of the propagation "
                "cancelled; docs/results.md, \"Leaves at the maxima of f_q\", compares it with `propagation`). "
                "Dijkstra (`dijkstra`), the paper's method and reebkit's default before layout 7, is measured beside "
                "it in sections 2, 3 and 6: old and new side by side.\n")
