@@ -79,6 +79,27 @@ TEST(ReebPerturbCli, VariantAndCorrespondence) {
   }
 }
 
+// --pose turns leaves of the graph that the analysis options give (the
+// defaults unless given), so that a benchmark can pin the graph it is made
+// on: the defaults spelled out give the same variant, the toe scale of
+// layout 8 (other leaves on the elk) another.
+TEST(ReebPerturbCli, ThePoseIsPlannedOnTheGraphOfTheAnalysisOptions) {
+  TempDir dir;
+  const std::filesystem::path input = embedded_dataset_dir() / "elk.off";
+  const auto posed = [&](const std::string& name, const std::string& options) {
+    const std::filesystem::path out = dir / (name + ".off");
+    const auto [status, output] = run_command(std::string(REEB_BINARY) + " perturb " + shell_quoted(input) + " -o " +
+                                              shell_quoted(out) + " --pose 3 " + options);
+    EXPECT_EQ(status, 0) << options << "\n" << output;
+    return read_vertices(out);
+  };
+  const Points defaults = posed("defaults", "");
+  EXPECT_EQ(posed("spelled_out", "--epsilon 0.15 --min-persistence 0.03 --feature-site midpoint"), defaults);
+  const Points toe_scale = posed("toe_scale", "--epsilon 0.05 --min-persistence 0.01");
+  ASSERT_EQ(toe_scale.rows(), defaults.rows());
+  EXPECT_GT((toe_scale - defaults).rowwise().norm().maxCoeff(), 0.01);
+}
+
 TEST(ReebPerturbCli, RotationScaleTranslationAreExact) {
   TempDir dir;
   const std::filesystem::path input = embedded_dataset_dir() / "cactus.off";

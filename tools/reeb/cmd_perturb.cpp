@@ -86,12 +86,15 @@ int run_perturb(const std::vector<std::string>& args) {
       "pose", po::value(&pose_seed),
       "turn up to 2 leaf components of the Reeb graph by 20-35 degrees, picked by this seed (section 5.2)")(
       "seed", po::value(&seed)->default_value(seed), "seed of the random rotation, noise and remeshing");
+  AnalysisOptions pose_graph;  // the analysis of the graph whose leaves --pose turns
+  options.add(analysis_options(pose_graph));
   po::positional_options_description positional;
   positional.add("mesh", 1);
   po::variables_map vm;
   if (!parse(args,
              "reeb perturb MESH -o OUT [--rotate random|AXIS:DEG] [--scale S] [--translate X,Y,Z] [--noise SIGMA] "
-             "[--decimate RATIO] [--remesh N_VERTICES|TARGET_EDGE] [--subdivide K] [--pose SEED] [--seed N]",
+             "[--decimate RATIO] [--remesh N_VERTICES|TARGET_EDGE] [--subdivide K] [--pose SEED] [--seed N] "
+             "[analysis options]",
              options, positional, vm))
     return 0;
   if (!(scale > 0.0 && std::isfinite(scale))) throw po::error("--scale must be a finite number > 0");
@@ -135,8 +138,8 @@ int run_perturb(const std::vector<std::string>& args) {
     mesh = std::move(variant.mesh);
   };
   if (vm.count("pose")) {
-    const MeshAnalysis analysis = analyze_mesh(original);
-    step("pose", Perturbation{PerturbationKind::Pose, 0, {}, pose_seed}, &analysis);
+    const MeshAnalysis planned = analyze_mesh(original, pose_graph);
+    step("pose", Perturbation{PerturbationKind::Pose, 0, {}, pose_seed}, &planned);
   }
   if (decimate != 1.0) step("decimate", Perturbation{PerturbationKind::Decimate, decimate, {}, seed});
   if (!remesh_text.empty()) step("remesh", Perturbation{PerturbationKind::Remesh, 0, remesh_options, seed});
