@@ -12,6 +12,7 @@
 #include <memory>
 #include <string>
 #include <tuple>
+#include <utility>
 
 namespace reebkit {
 
@@ -197,14 +198,18 @@ void add_protrusion_tips(const MeshGraph& graph, const FeatureOptions& options, 
 Index geodesic_midpoint(GeodesicSolver& solver, Index a, Index b, double reach, double unit,
                         const std::vector<double>& f1, const std::vector<double>& f2, Index fallback) {
   const GeodesicOptions ball{reach};
-  const std::vector<double> from_a = solver.run({a}, ball).distance;
+  // The ball around a, kept as (vertex, distance) pairs: a few vertices, not
+  // a copy of the whole field.
+  std::vector<std::pair<Index, double>> from_a;
+  const DistanceField& field = solver.run({a}, ball);
+  for (const Index w : solver.settled()) from_a.emplace_back(w, field.distance[static_cast<std::size_t>(w)]);
   const DistanceField& from_b = solver.run({b}, ball);
   Index best = kInvalidIndex;
   std::tuple<double, double, double, Index> best_key;
-  for (const Index w : solver.settled()) {
+  for (const auto& [w, x] : from_a) {
     const auto k = static_cast<std::size_t>(w);
-    const double x = from_a[k], y = from_b.distance[k];
-    if (!(x <= reach)) continue;
+    const double y = from_b.distance[k];
+    if (!(y <= reach)) continue;  // outside the ball around b
     const auto key =
         std::make_tuple(std::round(std::max(x, y) / unit), std::round(std::abs(x - y) / unit), -(f1[k] + f2[k]), w);
     if (best == kInvalidIndex || key < best_key) {
