@@ -88,6 +88,14 @@ def three_or_more(rows):
     return [r for r in rows if int(r["features"]) > 2]
 
 
+def by_variant(rows):
+    """The rows grouped by (perturbation, strength, geodesic method)."""
+    groups = defaultdict(list)
+    for r in rows:
+        groups[(r["kind"], float(r["strength"]), r["method"])].append(r)
+    return groups
+
+
 def summarize(rows):
     n = len(rows)
     return {
@@ -126,9 +134,7 @@ def sampling_section(work, report, out):
     out.append("| perturbation | strength | geodesic | variants | forward | backward | forward >= 90 % | same nodes "
                "| same leaves | same cycles | mean distance | rank 1 |")
     out.append("|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
-    table = defaultdict(list)
-    for r in rows:
-        table[(r["kind"], float(r["strength"]), r["method"])].append(r)
+    table = by_variant(rows)
     order = ["decimate", "remesh", "subdivide", "noise"]
     for key in sorted(table, key=lambda k: (order.index(k[0]), k[1], METHODS.index(k[2]))):
         s = summarize(table[key])
@@ -219,9 +225,7 @@ def sampling_section(work, report, out):
                    "sampling; their midpoint moves only as each of them does.\n")
         out.append("| perturbation | originals | layout 9: forward | same nodes | layout 10: forward | same nodes |")
         out.append("|---|---|---:|---:|---:|---:|")
-        old = defaultdict(list)
-        for r in layout9:
-            old[(r["kind"], float(r["strength"]), r["method"])].append(r)
+        old = by_variant(layout9)
         for kind, strength in [("decimate", 0.5), ("remesh", 1.0)]:
             for name, pick in [("all", lambda rs: rs), ("3 or more", three_or_more)]:
                 a, b = summarize(pick(old[(kind, strength, "fmm")])), summarize(pick(table[(kind, strength, "fmm")]))
