@@ -4,7 +4,8 @@
 // deform/proportions.h, the same person in every pose.
 //
 // The parts are planned once on the first pose (the lowest number), with
-// the analysis of layout 9 whatever the defaults (planning_analysis): its
+// the analysis options given (--option NAME=VALUE, the table of
+// pipeline/analysis_options.h; pose_retrieval.sh pins them): its
 // limbs, the smallest components of the Reeb graph holding at least 5 % of
 // the surface (michael: both legs, both arms, the head with the top of the
 // chest), and its torso, the largest region in no limb. A person changes 2
@@ -14,7 +15,7 @@
 // (thickness s), the torso thicker; no two people change the same parts the
 // same ways. Each person is shown in POSES poses drawn from all of them.
 //
-//   build/experiments/body_shapes TOSCA_DIR OUT_DIR [--shape michael]
+//   build/experiments/body_shapes [--option NAME=VALUE]... TOSCA_DIR OUT_DIR [--shape michael]
 //       [--people 10] [--poses 10] [--factors 1.05:1.15] [--seed 1] [--cla FILE]
 //
 // Writes OUT_DIR/personNN_SHAPEK.ply (binary PLY, the pose's vertices and
@@ -26,6 +27,7 @@
 #include "reebkit/io/mesh_io.h"
 #include "reebkit/mesh/hole_filling.h"
 #include "reebkit/mesh/load_mesh.h"
+#include "reebkit/pipeline/analysis_options.h"
 
 #include <algorithm>
 #include <cmath>
@@ -181,23 +183,8 @@ reebkit::ProportionPlan original_vertices_only(reebkit::ProportionPlan plan, Ind
 
 reebkit::Mesh load(const fs::path& path) { return std::move(reebkit::load_mesh(path).components.front()); }
 
-// The analysis the parts are planned on, pinned to layout 9's defaults
-// (fast marching, epsilon 0.15, persistence 0.03, the feature points on
-// their extrema, contour level lines, leaves at the maxima of f_q): a
-// benchmark must not move with the defaults of the method it measures.
-reebkit::AnalysisOptions planning_analysis() {
-  reebkit::AnalysisOptions o;
-  o.features.geodesic = reebkit::Geodesic::FastMarching;
-  o.features.epsilon = 0.15;
-  o.features.min_persistence = 0.03;
-  o.features.site = reebkit::FeatureSite::Extremum;
-  o.reeb.level_lines = reebkit::LevelLines::Contour;
-  o.reeb.leaves = reebkit::Leaves::Maxima;
-  return o;
-}
-
 int run(const fs::path& tosca, const fs::path& out, const std::string& shape, int people, int poses, Factors factors,
-        std::uint64_t seed, fs::path cla) {
+        std::uint64_t seed, fs::path cla, const reebkit::AnalysisOptions& planning) {
   const std::vector<fs::path> files = pose_files(tosca, shape);
   if (files.empty()) throw reebkit::Error(tosca.string() + ": no " + shape + "<number>.off");
   if (people < 1 || poses < 1 || poses > static_cast<int>(files.size()))
@@ -207,7 +194,7 @@ int run(const fs::path& tosca, const fs::path& out, const std::string& shape, in
   fs::create_directories(out);
   if (cla.empty()) cla = out / "body-shape.cla";
   reebkit::Timer timer;
-  const reebkit::MeshAnalysis reference = reebkit::analyze_mesh(load(files.front()), planning_analysis());
+  const reebkit::MeshAnalysis reference = reebkit::analyze_mesh(load(files.front()), planning);
   const std::vector<Part> parts = body_parts(reference.reeb);
   if (parts.size() < static_cast<std::size_t>(kMinChanges))
     throw reebkit::Error(files.front().string() + ": fewer than " + std::to_string(kMinChanges) + " body parts");
@@ -275,12 +262,22 @@ int run(const fs::path& tosca, const fs::path& out, const std::string& shape, in
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::vector<std::string> args(argv + 1, argv + argc);
+  std::vector<std::string> args(argv + 1, argv + argc);
   const auto usage = [] {
-    std::cerr << "usage: body_shapes TOSCA_DIR OUT_DIR [--shape michael] [--people 10] [--poses 10] "
-                 "[--factors 1.05:1.15] [--seed 1] [--cla FILE]\n";
+    std::cerr << "usage: body_shapes [--option NAME=VALUE]... TOSCA_DIR OUT_DIR [--shape michael] [--people 10] "
+                 "[--poses 10] [--factors 1.05:1.15] [--seed 1] [--cla FILE]\n";
     return 2;
   };
+  reebkit::AnalysisOptions planning;
+  try {
+    while (args.size() >= 2 && args[0] == "--option") {
+      reebkit::set_option_text(reebkit::analysis_option_fields(), planning, args[1]);
+      args.erase(args.begin(), args.begin() + 2);
+    }
+  } catch (const std::exception& e) {
+    std::cerr << "body_shapes: " << e.what() << "\n";
+    return 2;
+  }
   if (args.size() < 2 || args.size() % 2 != 0) return usage();
   std::map<std::string, std::string> options{{"--shape", "michael"},     {"--people", "10"}, {"--poses", "10"},
                                              {"--factors", "1.05:1.15"}, {"--seed", "1"},    {"--cla", ""}};
@@ -296,7 +293,7 @@ int main(int argc, char** argv) {
     factors.low = std::stod(range.substr(0, colon));
     factors.high = std::stod(range.substr(colon + 1));
     return run(args[0], args[1], options["--shape"], std::stoi(options["--people"]), std::stoi(options["--poses"]),
-               factors, std::stoull(options["--seed"]), options["--cla"]);
+               factors, std::stoull(options["--seed"]), options["--cla"], planning);
   } catch (const std::exception& e) {
     std::cerr << "body_shapes: " << e.what() << "\n";
     return 1;

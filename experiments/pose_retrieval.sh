@@ -85,6 +85,17 @@ shrec=$build/data/shrec07_watertight
 shrec_cla=$shrec/shrec07_watertight.cla
 work=$build/pose_retrieval
 body_shapes=$build/experiments/body_shapes
+# The analysis the benchmark meshes are planned on (the leaves --pose turns,
+# the parts body_shapes changes): layout 9's, pinned, since a benchmark must
+# not move with the defaults of the method it measures. The same options as
+# body_shapes' --option NAME=VALUE and as reeb perturb's --name VALUE.
+planning=(geodesic=fmm epsilon=0.15 min_persistence=0.03 feature_site=extremum level_lines=contour leaves=maxima)
+planning_options=() planning_flags=""
+for option in "${planning[@]}"; do
+  planning_options+=(--option "$option")
+  name=${option%%=*}
+  planning_flags+=" --${name//_/-} ${option#*=}"
+done
 articulated="Human Ant Octopus Teddy Hand Armadillo Fourleg"
 tosca_classes="cat centaur dog horse michael"
 
@@ -145,14 +156,11 @@ shrec07_pose_collection() {
     blocks+=$'\n'"$class 0 $(printf '%s' "$names" | wc -l)"$'\n'"$names"
   done
   printf 'PSB 1\n%d %d\n%s' "$(echo $articulated | wc -w)" "$total" "$blocks" > "$dir/shrec07-pose.cla"
-  # The leaves turned are those of layout 9's graph whatever the defaults
-  # (as body_shapes plans its parts): the benchmark must not move with the
-  # method it measures.
-  # shellcheck disable=SC2016
-  xargs -P "$threads" -L 1 bash -c \
+  # The leaves turned are those of the planning graph (above).
+  # shellcheck disable=SC2016,SC2086
+  PLANNING_FLAGS=$planning_flags xargs -P "$threads" -L 1 bash -c \
     '"$0" perturb "$1/$3.off" -o "$2/meshes/$3_pose$4.off" --pose "$5" --correspondence "$2/correspondence/$3_pose$4.corr" \
-       --geodesic fmm --epsilon 0.15 --min-persistence 0.03 --feature-site extremum --level-lines contour \
-       --leaves maxima > /dev/null' \
+       $PLANNING_FLAGS > /dev/null' \
     "$reeb" "$shrec" "$dir" < "$dir/jobs.txt"
   echo "$total posed meshes in $dir/meshes"
 }
@@ -183,8 +191,8 @@ remesh_each() {
 # with people.txt saying what each person's proportions are), remeshed.
 body_shape_collection() {
   local name=$1 dir=$work/$1
-  "$body_shapes" "$tosca" "$dir/people" --shape "$4" --people "$people" --poses "$5" --factors "$2" \
-    --seed "$3" --cla "$dir/$name.cla"
+  "$body_shapes" "${planning_options[@]}" "$tosca" "$dir/people" --shape "$4" --people "$people" --poses "$5" \
+    --factors "$2" --seed "$3" --cla "$dir/$name.cla"
   remesh_each "$dir" "$dir"/people/*.ply
   rm "$dir"/people/*.ply
 }
