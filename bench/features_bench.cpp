@@ -109,7 +109,7 @@ void run_features(benchmark::State& state, const Case& c, Geodesic method = Geod
   std::size_t count = 0;
   int passes = 0;
   for (auto _ : state) {
-    const FeaturePoints fp = extract_feature_points(c.graph, options);
+    const FeaturePoints fp = extract_feature_points(c.mesh, c.graph, options);
     const QuotientFunction fq = quotient_function(c.graph, fp.vertices, method);
     benchmark::DoNotOptimize(fq.value.data());
     count = fp.vertices.size();
@@ -188,7 +188,7 @@ void count_full_passes(benchmark::State& state, const std::filesystem::path& fol
     for (const auto& entry : std::filesystem::directory_iterator(folder)) {
       if (entry.path().extension() != ".off") continue;
       const Mesh mesh = load_mesh(entry.path()).components.front();
-      passes.push_back(extract_feature_points(build_mesh_graph(mesh)).sweeps + 1);
+      passes.push_back(extract_feature_points(mesh, build_mesh_graph(mesh)).sweeps + 1);
     }
   }
   const double n = static_cast<double>(passes.size());

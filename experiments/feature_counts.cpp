@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
         ++attempted;
         try {
           const auto mesh = reebkit::load_mesh(std::filesystem::path(argv[2]) / (m + ".off")).components.front();
-          counts.push_back(reebkit::extract_feature_points(reebkit::build_mesh_graph(mesh)).vertices.size());
+          counts.push_back(reebkit::extract_feature_points(mesh, reebkit::build_mesh_graph(mesh)).vertices.size());
         } catch (const std::exception& e) {
           failures.add(e.what(), m);
         }

@@ -16,6 +16,8 @@
 // are mapped to the original (MeshVariant::original_vertex), and the reverse
 // share, is measured with fast-marching distances on the original whichever
 // method found the points (one yardstick); epsilon = 0.05, the paper's.
+// Every variant and every TOSCA pose is analysed with its vertices numbered
+// anew (numbered_anew), as an independent file of the surface would be.
 #include "batch_failures.h"
 #include "reebkit/collection/mesh_inputs.h"
 #include "reebkit/core/error.h"
@@ -126,6 +128,34 @@ const std::vector<SamplingPerturbation>& perturbations() {
   return all;
 }
 
+/// A seed of its own for each name (FNV-1a of its bytes).
+std::uint64_t name_seed(const std::string& name) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (const char c : name) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+  return h;
+}
+
+/// The inverse of the permutation `to`.
+std::vector<Index> inverse(const std::vector<Index>& to) {
+  std::vector<Index> from(to.size());
+  for (std::size_t v = 0; v < to.size(); ++v) from[static_cast<std::size_t>(to[v])] = static_cast<Index>(v);
+  return from;
+}
+
+/// `variant` with its vertices numbered anew (random_permutation of `seed`),
+/// as another file of the same surface would number them: a decimation, a
+/// remeshing or a noise keeps the numbering of the original (vertex 0 where
+/// it was), which an analysis that leans on the numbering would find far
+/// more repeatable than a new scan.
+MeshVariant numbered_anew(MeshVariant variant, std::uint64_t seed) {
+  const std::vector<Index> to = random_permutation(variant.mesh.num_vertices(), seed);
+  std::vector<Index> original(variant.original_vertex.size());
+  for (std::size_t v = 0; v < to.size(); ++v) original[static_cast<std::size_t>(to[v])] = variant.original_vertex[v];
+  variant.mesh = renumbered(variant.mesh, to);
+  variant.original_vertex = std::move(original);
+  return variant;
+}
+
 /// The perturbation applied to `mesh` (perturb_mesh; the pose is planned on
 /// `analysis`, the analysis of `mesh`; remesh's strength is the vertex count
 /// as a share of the mesh's).
@@ -170,7 +200,8 @@ std::vector<VariantRow> sample_mesh(const std::string& name, const Mesh& mesh, s
     MeshVariant variant;
     std::string error;
     try {
-      variant = perturb(mesh, original[0].analysis, p);
+      variant = numbered_anew(perturb(mesh, original[0].analysis, p),
+                              name_seed(name + " " + p.kind + " " + std::to_string(p.strength)));
     } catch (const std::exception& e) {
       error = e.what();
     }
@@ -326,7 +357,8 @@ int rigid(const fs::path& out, const fs::path& dir, const fs::path& cla, int sim
       const double diameter = a.analysis.features.diameter;
       FeatureOptions dijkstra_features = base_options.features;
       dijkstra_features.geodesic = Geodesic::Dijkstra;
-      const std::size_t dijkstra_count = extract_feature_points(a.analysis.graph, dijkstra_features).vertices.size();
+      const std::size_t dijkstra_count =
+          extract_feature_points(a.analysis.mesh, a.analysis.graph, dijkstra_features).vertices.size();
       char line[512];
       std::snprintf(line, sizeof line, "%s,%d,%d,%d,%zu,%zu,%zu,%.4f,%.4f,%.4f,%.4f\n", name.c_str(),
                     a.analysis.reeb.num_nodes(), a.analysis.reeb.leaf_count(), a.analysis.reeb.independent_cycles(),
@@ -371,11 +403,15 @@ std::string pose_class(std::string stem) {
 }
 
 /// Section 3: each TOSCA pose against the first pose of its class (same
-/// triangulation: vertex i corresponds), both methods; all pairs of graph distances.
+/// triangulation: vertex i corresponds, each pose numbered anew), both
+/// methods; all pairs of graph distances.
 int tosca(const fs::path& out, const fs::path& dir) {
   const std::vector<MeshInput> all = list_mesh_inputs({dir.string()});
   const auto n = static_cast<std::ptrdiff_t>(all.size());
   std::vector<std::array<Analysed, 2>> analysed_all(all.size());
+  // Each pose numbered anew (numbered_anew): the poses share the numbering
+  // of their files, vertex i corresponding, which an analysis must not lean on.
+  std::vector<std::vector<Index>> to_all(all.size());
   BatchFailures failures("robustness tosca");
   std::vector<char> described(all.size(), 0);
 #pragma omp parallel for schedule(dynamic, 1)
@@ -383,7 +419,9 @@ int tosca(const fs::path& out, const fs::path& dir) {
     const auto k = static_cast<std::size_t>(i);
     try {  // an exception may not leave the parallel loop
       const Mesh mesh = load_mesh(all[k].path).components.front();
-      for (std::size_t m = 0; m < 2; ++m) analysed_all[k][m] = analyse(mesh, kMethods[m]);
+      to_all[k] = random_permutation(mesh.num_vertices(), name_seed(all[k].path.stem().string()));
+      const Mesh anew = renumbered(mesh, to_all[k]);
+      for (std::size_t m = 0; m < 2; ++m) analysed_all[k][m] = analyse(anew, kMethods[m]);
       described[k] = 1;
     } catch (const std::exception& e) {
       failures.add(e.what(), all[k].path.string());
@@ -391,8 +429,13 @@ int tosca(const fs::path& out, const fs::path& dir) {
   }
   std::vector<MeshInput> inputs;  // the meshes described, in order
   std::vector<std::array<Analysed, 2>> analysed;
+  std::vector<std::vector<Index>> to, from;  // file vertex -> analysed vertex, and back
   for (std::size_t k = 0; k < all.size(); ++k)
-    if (described[k]) inputs.push_back(all[k]), analysed.push_back(std::move(analysed_all[k]));
+    if (described[k]) {
+      inputs.push_back(all[k]), analysed.push_back(std::move(analysed_all[k]));
+      from.push_back(inverse(to_all[k]));
+      to.push_back(std::move(to_all[k]));
+    }
   std::ofstream poses(out / "tosca_poses.csv"), pairs(out / "tosca_pairs.csv");
   poses << "mesh,class,reference,method,features,reference_features,forward,backward,nodes,reference_nodes,leaves,"
            "reference_leaves,distance\n";
@@ -404,7 +447,10 @@ int tosca(const fs::path& out, const fs::path& dir) {
     for (std::size_t m = 0; m < 2; ++m) {
       const MeshAnalysis& a = analysed[it->second][m].analysis;
       const MeshAnalysis& b = analysed[i][m].analysis;
-      const std::vector<Index> fa = surface_features(a), fb = surface_features(b);
+      const std::vector<Index> fa = surface_features(a);
+      std::vector<Index> fb;  // on the reference's numbering
+      for (const Index v : surface_features(b))
+        fb.push_back(to[it->second][static_cast<std::size_t>(from[i][static_cast<std::size_t>(v)])]);
       const double radius = kEpsilon * a.features.diameter;
       char line[512];
       std::snprintf(line, sizeof line, "%s,%s,%s,%s,%zu,%zu,%.4f,%.4f,%d,%d,%d,%d,%.6g\n", stem.c_str(), label.c_str(),

@@ -51,7 +51,7 @@ double largest_change_under_similarity(const Mesh& mesh, const std::vector<Index
     std::shuffle(order.begin(), order.end(), rng);
     std::vector<Index> moved_label(label.size());
     for (std::size_t v = 0; v < label.size(); ++v) moved_label[static_cast<std::size_t>(order[v])] = label[v];
-    const SurfaceSpectra after = surface_spectra(test::renumbered(moved, order), moved_label, regions, options);
+    const SurfaceSpectra after = surface_spectra(renumbered(moved, order), moved_label, regions, options);
     for (std::size_t k = 0; k < before.global.size(); ++k)
       largest = std::max(largest, std::abs(after.global[k] - before.global[k]));
     for (std::size_t k = 0; k < before.region.size(); ++k)

@@ -29,6 +29,11 @@ StarOptions star(int arms, int levels = 4) {
   return o;
 }
 
+// The feature points of `mesh`, on its own graph.
+FeaturePoints features_of(const Mesh& mesh, const FeatureOptions& options = {}) {
+  return extract_feature_points(mesh, build_mesh_graph(mesh), options);
+}
+
 std::vector<Index> sorted(std::vector<Index> v) {
   std::sort(v.begin(), v.end());
   return v;
@@ -52,7 +57,7 @@ TEST_P(StarArms, OneFeaturePointPerArmTip) {
   const StarOptions options = star(GetParam());
   const Mesh mesh = make_star(options);
   const MeshGraph g = build_mesh_graph(mesh);
-  const FeaturePoints fp = extract_feature_points(g);
+  const FeaturePoints fp = extract_feature_points(mesh, g);
   ASSERT_EQ(fp.vertices.size(), static_cast<std::size_t>(options.arms));
   // Each tip has exactly one feature point within epsilon (normalized) of it.
   const double radius = 0.05 * fp.diameter;
@@ -79,14 +84,15 @@ TEST(FeaturePoints, PersistentExtremaKeepOneFeaturePointPerArmTip) {
     for (const Geodesic method : {Geodesic::Dijkstra, Geodesic::FastMarching})
       for (std::uint64_t seed = 0; seed <= (method == Geodesic::FastMarching ? 2u : 0u); ++seed) {
         const Mesh base = make_star(star(arms));
-        const MeshGraph g = build_mesh_graph(seed == 0 ? base : resample_mesh(base, ResamplingOptions{0.2, seed}));
+        const Mesh mesh = seed == 0 ? base : resample_mesh(base, ResamplingOptions{0.2, seed});
+        const MeshGraph g = build_mesh_graph(mesh);
         FeatureOptions options;
         options.geodesic = method;
         options.min_persistence = 0.0;
-        const FeaturePoints all = extract_feature_points(g, options);
+        const FeaturePoints all = extract_feature_points(mesh, g, options);
         EXPECT_EQ(all.extrema1, local_extrema(g, geodesic_distances(g, {all.source1}, method).distance)) << arms;
         options.min_persistence = 0.05;
-        const FeaturePoints fp = extract_feature_points(g, options);
+        const FeaturePoints fp = extract_feature_points(mesh, g, options);
         EXPECT_EQ(fp.vertices.size(), static_cast<std::size_t>(arms))
             << arms << " arms, seed " << seed << ", " << geodesic_name(method);
         EXPECT_TRUE(std::includes(all.extrema1.begin(), all.extrema1.end(), fp.extrema1.begin(), fp.extrema1.end()));
@@ -105,7 +111,7 @@ TEST(FeaturePoints, FastMarchingFindsOneFeaturePointPerArmTip) {
     for (std::uint64_t seed = 0; seed <= 2; ++seed) {
       const Mesh mesh = seed == 0 ? base : resample_mesh(base, ResamplingOptions{0.2, seed});
       const MeshGraph g = build_mesh_graph(mesh);
-      const FeaturePoints fp = extract_feature_points(g, fmm);
+      const FeaturePoints fp = extract_feature_points(mesh, g, fmm);
       ASSERT_EQ(fp.vertices.size(), static_cast<std::size_t>(arms)) << arms << " arms, seed " << seed;
       EXPECT_DOUBLE_EQ(fast_marching(g, fp.source1).distance[fp.source2], fp.diameter);
       for (const Index tip : arm_tips(mesh, options)) {
@@ -121,24 +127,29 @@ TEST(FeaturePoints, FastMarchingFindsOneFeaturePointPerArmTip) {
 
 TEST(FeaturePoints, SingleArmShapeHasTwoEnds) {
   // One arm on a ball: an elongated shape whose two ends are both extremities.
-  const FeaturePoints fp = extract_feature_points(build_mesh_graph(make_star(star(1))));
+  const Mesh mesh = make_star(star(1));
+  const FeaturePoints fp = extract_feature_points(mesh, build_mesh_graph(mesh));
   EXPECT_EQ(fp.vertices.size(), 2u);
 }
 
 // The passes the search spends (FeaturePoints::sweeps) on a shape whose
 // first sweep ends on a mutually farthest pair and whose farthest-point
-// seed leads to no longer diameter (one arm on a ball). Fast marching: a
-// Dijkstra pass from vertex 0 for v_s1, then f1 and f2, and the seed's own
-// pass. Dijkstra without seeds: vertex 0's double sweep, whose second and
-// third passes are f1 and f2.
+// seed leads to no longer diameter (one arm on a ball). From the centroid
+// (the default): f1 from the vertex farthest from it, f2, and the seed's
+// own pass. From vertex 0 under fast marching: a Dijkstra pass from it for
+// v_s1 first. Dijkstra from vertex 0 without seeds: vertex 0's double
+// sweep, whose second and third passes are f1 and f2.
 TEST(FeaturePoints, TheSearchSpendsOnlyThePassesItReads) {
-  const MeshGraph g = build_mesh_graph(make_star(star(1)));
+  const Mesh mesh = make_star(star(1));
+  const MeshGraph g = build_mesh_graph(mesh);
   FeatureOptions options;
-  EXPECT_EQ(extract_feature_points(g, options).sweeps, 1 + 2 + 1);
+  EXPECT_EQ(extract_feature_points(mesh, g, options).sweeps, 2 + 1);
+  options.start = DiameterStart::Vertex;
+  EXPECT_EQ(extract_feature_points(mesh, g, options).sweeps, 1 + 2 + 1);
   options.extra_seeds = 0;
-  EXPECT_EQ(extract_feature_points(g, options).sweeps, 1 + 2);
+  EXPECT_EQ(extract_feature_points(mesh, g, options).sweeps, 1 + 2);
   options.geodesic = Geodesic::Dijkstra;
-  EXPECT_EQ(extract_feature_points(g, options).sweeps, 3);
+  EXPECT_EQ(extract_feature_points(mesh, g, options).sweeps, 3);
 }
 
 // On the six-armed star vertex 0's sweep ends on two arms that are not the
@@ -146,11 +157,13 @@ TEST(FeaturePoints, TheSearchSpendsOnlyThePassesItReads) {
 // goes on from the seed's own pass (its f1), so it costs one pass more, f2
 // (the seed is mutually farthest with its end): 1 + 2 + 1 + 1.
 TEST(FeaturePoints, ALongerSeedsSweepGoesOnFromItsOwnPass) {
-  const MeshGraph g = build_mesh_graph(make_star(star(6)));
+  const Mesh mesh = make_star(star(6));
+  const MeshGraph g = build_mesh_graph(mesh);
   FeatureOptions options;
-  const FeaturePoints with_seed = extract_feature_points(g, options);
+  options.start = DiameterStart::Vertex;
+  const FeaturePoints with_seed = extract_feature_points(mesh, g, options);
   options.extra_seeds = 0;
-  const FeaturePoints without = extract_feature_points(g, options);
+  const FeaturePoints without = extract_feature_points(mesh, g, options);
   ASSERT_NE(std::minmax(with_seed.source1, with_seed.source2), std::minmax(without.source1, without.source2));
   EXPECT_GT(with_seed.diameter, without.diameter);
   EXPECT_EQ(with_seed.sweeps, 1 + 2 + 1 + 1);
@@ -159,12 +172,13 @@ TEST(FeaturePoints, ALongerSeedsSweepGoesOnFromItsOwnPass) {
 // Under either method, in its own metric; f1 and f2 are the fields from
 // the two ends.
 TEST(FeaturePoints, DiameterEndsAreMutuallyFarthestFeaturePoints) {
-  const MeshGraph g = build_mesh_graph(make_star(star(7)));
+  const Mesh mesh = make_star(star(7));
+  const MeshGraph g = build_mesh_graph(mesh);
   for (const Geodesic method : {Geodesic::Dijkstra, Geodesic::FastMarching}) {
     SCOPED_TRACE(geodesic_name(method));
     FeatureOptions options;
     options.geodesic = method;
-    const FeaturePoints fp = extract_feature_points(g, options);
+    const FeaturePoints fp = extract_feature_points(mesh, g, options);
     const DistanceField from1 = geodesic_distances(g, {fp.source1}, method);
     const DistanceField from2 = geodesic_distances(g, {fp.source2}, method);
     EXPECT_EQ(from1.farthest, fp.source2);
@@ -179,8 +193,9 @@ TEST(FeaturePoints, DiameterEndsAreMutuallyFarthestFeaturePoints) {
 }
 
 TEST(FeaturePoints, FeaturePointsAreMoreThanEpsilonApart) {
-  const MeshGraph g = build_mesh_graph(make_star(star(12)));
-  const FeaturePoints fp = extract_feature_points(g);
+  const Mesh mesh = make_star(star(12));
+  const MeshGraph g = build_mesh_graph(mesh);
+  const FeaturePoints fp = extract_feature_points(mesh, g);
   for (const Index a : fp.vertices) {
     const DistanceField d = dijkstra(g, a);
     for (const Index b : fp.vertices) {
@@ -199,13 +214,13 @@ TEST(FeaturePoints, InvariantToRotationTranslationAndScale) {
     const Mesh mesh = min_persistence > 0 ? resample_mesh(star6, ResamplingOptions{0.2, 1}) : star6;
     FeatureOptions options;
     options.min_persistence = min_persistence;
-    const auto reference = sorted(extract_feature_points(build_mesh_graph(mesh), options).vertices);
+    const auto reference = sorted(extract_feature_points(mesh, build_mesh_graph(mesh), options).vertices);
     for (std::uint64_t seed = 1; seed <= 4; ++seed) {
       Similarity t;
       t.rotation = random_rotation(seed);
       t.scale = 0.01 * static_cast<double>(seed * seed * seed * 10);  // 0.1 .. 6.4
       t.translation = Vec3(3.0, -7.0, 1e3) * static_cast<double>(seed);
-      const auto moved = sorted(extract_feature_points(build_mesh_graph(transformed(mesh, t)), options).vertices);
+      const auto moved = sorted(features_of(transformed(mesh, t), options).vertices);
       EXPECT_EQ(moved, reference) << "seed " << seed << ", min_persistence " << min_persistence;
     }
   }
@@ -215,14 +230,13 @@ TEST(FeaturePoints, FastMarchingInvariantToRotationTranslationAndScale) {
   const Mesh mesh = make_star(star(6));
   FeatureOptions fmm;
   fmm.geodesic = Geodesic::FastMarching;
-  const auto reference = sorted(extract_feature_points(build_mesh_graph(mesh), fmm).vertices);
+  const auto reference = sorted(extract_feature_points(mesh, build_mesh_graph(mesh), fmm).vertices);
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
     Similarity t;
     t.rotation = random_rotation(seed);
     t.scale = 0.01 * static_cast<double>(seed * seed * seed * 10);
     t.translation = Vec3(3.0, -7.0, 1e3) * static_cast<double>(seed);
-    EXPECT_EQ(sorted(extract_feature_points(build_mesh_graph(transformed(mesh, t)), fmm).vertices), reference)
-        << "seed " << seed;
+    EXPECT_EQ(sorted(features_of(transformed(mesh, t), fmm).vertices), reference) << "seed " << seed;
   }
 }
 
@@ -238,11 +252,12 @@ TEST(FeaturePoints, StartVertexDoesNotChangeTheResult) {
   // must not change.
   const Mesh mesh = make_star(star(9));
   const MeshGraph g = build_mesh_graph(mesh);
-  const FeaturePoints reference = extract_feature_points(g);
+  FeatureOptions options;
+  options.start = DiameterStart::Vertex;
+  const FeaturePoints reference = extract_feature_points(mesh, g, options);
   for (Index start = 1; start < mesh.num_vertices(); start += mesh.num_vertices() / 17) {
-    FeatureOptions options;
     options.start_vertex = start;
-    const FeaturePoints fp = extract_feature_points(g, options);
+    const FeaturePoints fp = extract_feature_points(mesh, g, options);
     ASSERT_EQ(fp.vertices.size(), reference.vertices.size()) << "start " << start;
     EXPECT_EQ(unmatched(g, fp.vertices, reference.vertices, 0.05 * reference.diameter), 0) << "start " << start;
   }
@@ -250,10 +265,9 @@ TEST(FeaturePoints, StartVertexDoesNotChangeTheResult) {
 
 TEST(FeaturePoints, LargerEpsilonMergesNearbyExtremities) {
   // With epsilon near 1 everything is "one place": a single feature point.
-  const MeshGraph g = build_mesh_graph(make_star(star(5)));
   FeatureOptions options;
   options.epsilon = 1.0;
-  EXPECT_EQ(extract_feature_points(g, options).vertices.size(), 1u);
+  EXPECT_EQ(features_of(make_star(star(5)), options).vertices.size(), 1u);
 }
 
 TEST(FeaturePoints, SymmetricMeshesWithTiedDiameterEndsStillHaveFeaturePoints) {
@@ -262,7 +276,7 @@ TEST(FeaturePoints, SymmetricMeshesWithTiedDiameterEndsStillHaveFeaturePoints) {
   // extrema themselves, or the relaxed intersection can come out empty.
   for (int major = 12; major <= 24; ++major)
     for (int minor = 6; minor <= 12; ++minor) {
-      const FeaturePoints fp = extract_feature_points(build_mesh_graph(make_torus(major, minor)));
+      const FeaturePoints fp = features_of(make_torus(major, minor));
       EXPECT_FALSE(fp.vertices.empty()) << "torus " << major << " x " << minor;
     }
 }
@@ -279,15 +293,15 @@ TEST(FeaturePoints, ALimbWhoseTipsSplitKeepsItsPointAtTheDefaultEpsilonOrByProtr
   const auto on_the_paw = [&](const FeaturePoints& f) {
     return std::count_if(f.vertices.begin(), f.vertices.end(), [&](Index v) { return cat.vertices(v, 2) > 140; });
   };
-  EXPECT_EQ(on_the_paw(extract_feature_points(g, {})), 1);
+  EXPECT_EQ(on_the_paw(extract_feature_points(cat, g, {})), 1);
   FeatureOptions toe_scale;
   toe_scale.epsilon = 0.05;
   toe_scale.min_persistence = 0.01;
-  const FeaturePoints paper = extract_feature_points(g, toe_scale);
+  const FeaturePoints paper = extract_feature_points(cat, g, toe_scale);
   EXPECT_EQ(on_the_paw(paper), 0);
   FeatureOptions rescue = toe_scale;
   rescue.protrusion_persistence = 0.05;
-  const FeaturePoints rescued = extract_feature_points(g, rescue);
+  const FeaturePoints rescued = extract_feature_points(cat, g, rescue);
   EXPECT_GE(on_the_paw(rescued), 1);
   // Added, never removed, and every added point is an extremum of f1 or f2.
   for (const Index v : paper.vertices)
@@ -312,7 +326,7 @@ TEST(FeaturePoints, EveryTOSCAPoseHasOnePointPerLimb) {
     for (const std::string& file : test::files_in(tosca)) {
       if (file.rfind(name, 0) != 0 || std::filesystem::path(file).extension() != ".off") continue;
       const Mesh mesh = load_mesh(tosca / file).components.front();
-      EXPECT_EQ(extract_feature_points(build_mesh_graph(mesh)).vertices.size(), limbs) << file;
+      EXPECT_EQ(extract_feature_points(mesh, build_mesh_graph(mesh)).vertices.size(), limbs) << file;
     }
 }
 
@@ -323,10 +337,10 @@ TEST(FeaturePoints, EveryTOSCAPoseHasOnePointPerLimb) {
 TEST(FeaturePoints, AMidpointLiesHalfwayBetweenItsTwoExtrema) {
   const Mesh mesh = load_mesh(test::embedded_dataset_dir() / "cactus.off").components.front();
   const MeshGraph g = build_mesh_graph(mesh);
-  const FeaturePoints fp = extract_feature_points(g);
+  const FeaturePoints fp = extract_feature_points(mesh, g);
   FeatureOptions on_extrema;
   on_extrema.site = FeatureSite::Extremum;
-  const FeaturePoints extrema = extract_feature_points(g, on_extrema);
+  const FeaturePoints extrema = extract_feature_points(mesh, g, on_extrema);
   ASSERT_EQ(fp.vertices.size(), extrema.vertices.size());
   EXPECT_NE(fp.vertices, extrema.vertices);  // some pair falls apart on this mesh
   const double edge = *std::max_element(g.length.begin(), g.length.end());
@@ -370,7 +384,8 @@ TEST(FeaturePoints, MidpointsStayOnRoundTipsWhenTheSurfaceIsRemeshed) {
   const auto moved = [&](FeatureSite site) {
     FeatureOptions options;
     options.site = site;
-    const FeaturePoints original = extract_feature_points(g, options), remeshed = extract_feature_points(h, options);
+    const FeaturePoints original = extract_feature_points(teddy, g, options),
+                        remeshed = extract_feature_points(copy.mesh, h, options);
     EXPECT_EQ(remeshed.vertices.size(), original.vertices.size());
     std::vector<Index> mapped;
     for (const Index v : remeshed.vertices) mapped.push_back(copy.original_vertex[static_cast<std::size_t>(v)]);
@@ -384,14 +399,46 @@ TEST(FeaturePoints, MidpointsStayOnRoundTipsWhenTheSurfaceIsRemeshed) {
 
 TEST(FeaturePoints, MidpointsAreInvariantToRotationTranslationAndScale) {
   const Mesh mesh = load_mesh(test::embedded_dataset_dir() / "cactus.off").components.front();
-  const auto reference = extract_feature_points(build_mesh_graph(mesh)).vertices;
+  const auto reference = extract_feature_points(mesh, build_mesh_graph(mesh)).vertices;
   for (std::uint64_t seed = 1; seed <= 4; ++seed) {
     Similarity t;
     t.rotation = random_rotation(seed);
     t.scale = std::pow(10.0, static_cast<double>(seed) - 2.5);  // 0.03 .. 30
     t.translation = Vec3(-4.0, 9.0, 2e2) * static_cast<double>(seed);
-    EXPECT_EQ(extract_feature_points(build_mesh_graph(transformed(mesh, t))).vertices, reference) << "seed " << seed;
+    EXPECT_EQ(features_of(transformed(mesh, t)).vertices, reference) << "seed " << seed;
   }
+}
+
+TEST(FeaturePoints, DiameterStartNamesRoundTrip) {
+  for (const DiameterStart start : {DiameterStart::Vertex, DiameterStart::Centroid})
+    EXPECT_EQ(parse_diameter_start(diameter_start_name(start)), start);
+  EXPECT_THROW(parse_diameter_start("zero"), InvalidArgument);
+}
+
+// The start of DiameterStart::Centroid: no vertex of the cactus lies farther
+// from its area centroid, and it is the same vertex of the surface however
+// the mesh is numbered, rotated, moved or scaled.
+TEST(FeaturePoints, TheVertexFarthestFromTheCentroidIsTheSameWhateverTheNumberingAndFrame) {
+  const Mesh mesh = load_mesh(test::embedded_dataset_dir() / "cactus.off").components.front();
+  const Index far = farthest_from_centroid(mesh);
+  Vec3 centroid = Vec3::Zero();
+  double area = 0.0;
+  for (Index t = 0; t < mesh.num_triangles(); ++t) {
+    const double a = triangle_area(mesh, t);
+    for (int k = 0; k < 3; ++k) centroid += a / 3.0 * mesh.vertices.row(mesh.triangles(t, k)).transpose();
+    area += a;
+  }
+  centroid /= area;
+  for (Index v = 0; v < mesh.num_vertices(); ++v)
+    EXPECT_LE((mesh.vertices.row(v).transpose() - centroid).norm(),
+              (mesh.vertices.row(far).transpose() - centroid).norm())
+        << v;
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    const std::vector<Index> to = random_permutation(mesh.num_vertices(), seed);
+    EXPECT_EQ(farthest_from_centroid(renumbered(mesh, to)), to[static_cast<std::size_t>(far)]) << "seed " << seed;
+    EXPECT_EQ(farthest_from_centroid(transformed(mesh, random_similarity(mesh, seed))), far) << "seed " << seed;
+  }
+  EXPECT_THROW(farthest_from_centroid(Mesh{}), InvalidArgument);
 }
 
 TEST(FeaturePoints, FeatureSiteNamesRoundTrip) {
@@ -401,20 +448,23 @@ TEST(FeaturePoints, FeatureSiteNamesRoundTrip) {
 }
 
 TEST(FeaturePoints, RejectsBadInput) {
-  const MeshGraph g = build_mesh_graph(make_cube());
+  const Mesh cube = make_cube();
+  const MeshGraph g = build_mesh_graph(cube);
   FeatureOptions bad_start;
   bad_start.start_vertex = 8;
-  EXPECT_THROW(extract_feature_points(g, bad_start), InvalidArgument);
+  EXPECT_THROW(extract_feature_points(cube, g, bad_start), InvalidArgument);
+  // A graph of another mesh.
+  EXPECT_THROW(extract_feature_points(make_star(star(1)), g), InvalidArgument);
   FeatureOptions bad_eps;
   bad_eps.epsilon = 0.0;
-  EXPECT_THROW(extract_feature_points(g, bad_eps), InvalidArgument);
+  EXPECT_THROW(extract_feature_points(cube, g, bad_eps), InvalidArgument);
   for (const double bad : {-0.01, 1.5, std::nan("")}) {
     FeatureOptions bad_persistence;
     bad_persistence.min_persistence = bad;
-    EXPECT_THROW(extract_feature_points(g, bad_persistence), InvalidArgument) << bad;
+    EXPECT_THROW(extract_feature_points(cube, g, bad_persistence), InvalidArgument) << bad;
     FeatureOptions bad_protrusion;
     bad_protrusion.protrusion_persistence = bad;
-    EXPECT_THROW(extract_feature_points(g, bad_protrusion), InvalidArgument) << bad;
+    EXPECT_THROW(extract_feature_points(cube, g, bad_protrusion), InvalidArgument) << bad;
   }
   // Two disjoint triangles: not connected.
   Mesh two;
@@ -422,7 +472,7 @@ TEST(FeaturePoints, RejectsBadInput) {
   two.vertices << 0, 0, 0, 1, 0, 0, 0, 1, 0, 5, 0, 0, 6, 0, 0, 5, 1, 0;
   two.triangles.resize(2, 3);
   two.triangles << 0, 1, 2, 3, 4, 5;
-  EXPECT_THROW(extract_feature_points(build_mesh_graph(two)), InvalidArgument);
+  EXPECT_THROW(features_of(two), InvalidArgument);
 }
 
 }  // namespace

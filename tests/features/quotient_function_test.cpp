@@ -45,8 +45,9 @@ TEST(QuotientFunction, IsOneMinusNormalizedDistanceToNearestFeature) {
 }
 
 TEST(QuotientFunction, SpansZeroToOneWithOnesAtFeatures) {
-  const MeshGraph g = build_mesh_graph(make_star(StarOptions{}));
-  const FeaturePoints fp = extract_feature_points(g);
+  const Mesh mesh = make_star(StarOptions{});
+  const MeshGraph g = build_mesh_graph(mesh);
+  const FeaturePoints fp = extract_feature_points(mesh, g);
   const QuotientFunction fq = quotient_function(g, fp.vertices);
   EXPECT_DOUBLE_EQ(*std::min_element(fq.value.begin(), fq.value.end()), 0.0);
   EXPECT_DOUBLE_EQ(*std::max_element(fq.value.begin(), fq.value.end()), 1.0);
@@ -59,7 +60,7 @@ TEST(QuotientFunction, SpansZeroToOneWithOnesAtFeatures) {
 TEST(QuotientFunction, InvariantToSimilarityTransforms) {
   const Mesh mesh = make_star(StarOptions{});
   const MeshGraph g = build_mesh_graph(mesh);
-  const FeaturePoints fp = extract_feature_points(g);
+  const FeaturePoints fp = extract_feature_points(mesh, g);
   const QuotientFunction reference = quotient_function(g, fp.vertices);
   Similarity t;
   t.rotation = random_rotation(42);

@@ -67,7 +67,7 @@ TEST(Transform, CanonicalCopyIsTheSameForEverySimilarCopy) {
     std::vector<Index> order(static_cast<std::size_t>(star.num_vertices()));
     std::iota(order.begin(), order.end(), Index{0});
     std::shuffle(order.begin(), order.end(), rng);
-    const Mesh moved = test::renumbered(transformed(star, random_similarity(star, rng)), order);
+    const Mesh moved = renumbered(transformed(star, random_similarity(star, rng)), order);
     const CanonicalCopy again = canonical_copy(moved);
     EXPECT_EQ(again.mesh.vertices, canonical.mesh.vertices);
     EXPECT_EQ(again.mesh.triangles, canonical.mesh.triangles);

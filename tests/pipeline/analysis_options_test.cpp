@@ -22,6 +22,7 @@ AnalysisOptions changed() {
   o.features.extra_seeds = 0;
   o.features.protrusion_persistence = 0.05;
   o.features.site = FeatureSite::Extremum;
+  o.features.start = DiameterStart::Vertex;
   o.reeb.level_lines = LevelLines::Paper;
   o.reeb.leaves = Leaves::Propagation;
   o.reeb.skeleton_levels = 50;
@@ -53,20 +54,23 @@ TEST(AnalysisOptions, NamedOptionsRoundTrip) {
   EXPECT_EQ(back.reeb.skeleton_levels, 50);
   EXPECT_EQ(back.holes.max_loop_length, 0.5);
   EXPECT_EQ(back.reeb.level_lines, LevelLines::Paper);
-  // Options a file lacks keep their defaults, but for level_lines, leaves
-  // and feature_site: a file that predates them was analysed with
-  // Definition 6, every termination of the propagation and the feature
-  // points on their extrema.
+  // Options a file lacks keep their defaults, but for level_lines, leaves,
+  // feature_site and diameter_start: a file that predates them was analysed
+  // with Definition 6, every termination of the propagation, the feature
+  // points on their extrema and the diameter search from vertex 0.
   EXPECT_EQ(analysis_options_from({{"epsilon", 0.2}}).reeb.level_lines, LevelLines::Paper);
   EXPECT_EQ(analysis_options_from({{"epsilon", 0.2}}).reeb.leaves, Leaves::Propagation);
   EXPECT_EQ(analysis_options_from({{"epsilon", 0.2}}).features.site, FeatureSite::Extremum);
+  EXPECT_EQ(analysis_options_from({{"epsilon", 0.2}}).features.start, DiameterStart::Vertex);
   EXPECT_EQ(analysis_options_from({}).reeb.level_lines, LevelLines::Contour);
   EXPECT_EQ(analysis_options_from({}).reeb.leaves, Leaves::Maxima);
   EXPECT_EQ(analysis_options_from({}).features.site, FeatureSite::Midpoint);
+  EXPECT_EQ(analysis_options_from({}).features.start, DiameterStart::Centroid);
   const AnalysisOptions partial = analysis_options_from({{"epsilon", 0.2},
                                                          {"level_lines", std::string("contour")},
                                                          {"leaves", std::string("maxima")},
-                                                         {"feature_site", std::string("midpoint")}});
+                                                         {"feature_site", std::string("midpoint")},
+                                                         {"diameter_start", std::string("centroid")}});
   EXPECT_EQ(partial.features.epsilon, 0.2);
   const auto differences = analysis_option_differences(partial, AnalysisOptions{});
   ASSERT_EQ(differences.size(), 1u);

@@ -227,11 +227,11 @@ TEST(BuildReebGraph, InvariantToVertexRenumbering) {
       std::vector<Index> to(static_cast<std::size_t>(mesh.num_vertices()));
       std::iota(to.begin(), to.end(), Index{0});
       std::shuffle(to.begin(), to.end(), std::mt19937(seed + 100));
-      const Mesh renumbered = test::renumbered(mesh, to);
+      const Mesh other = renumbered(mesh, to);
       std::vector<double> g(f.size());
       for (std::size_t v = 0; v < f.size(); ++v) g[static_cast<std::size_t>(to[v])] = f[v];
       const ReebGraph a = build_reeb_graph(mesh, build_mesh_graph(mesh), f);
-      const ReebGraph b = build_reeb_graph(renumbered, build_mesh_graph(renumbered), g);
+      const ReebGraph b = build_reeb_graph(other, build_mesh_graph(other), g);
       ASSERT_EQ(a.num_nodes(), b.num_nodes());
       EXPECT_EQ(a.edges, b.edges);
       for (std::size_t n = 0; n < a.nodes.size(); ++n) {
@@ -260,7 +260,7 @@ TEST(Skeleton, RunsAlongTheAxisOfEachStarArm) {
   const std::vector<Vec3> axes = star_arm_directions(options);
   const Mesh mesh = make_star(options);
   const MeshGraph graph = build_mesh_graph(mesh);
-  const std::vector<Index> features = extract_feature_points(graph).vertices;
+  const std::vector<Index> features = extract_feature_points(mesh, graph).vertices;
   const ReebGraph g = build_reeb_graph(mesh, graph, quotient_function(graph, features).value);
   ASSERT_EQ(g.leaf_count(), options.arms) << summary(g);
   std::vector<int> arm_seen(axes.size(), 0);

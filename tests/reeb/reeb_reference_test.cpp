@@ -26,7 +26,7 @@ TEST_P(StarArms, OneRootAndOneLeafPerFeaturePoint) {
   options.levels = levels;
   const Mesh mesh = make_star(options);
   const MeshGraph graph = build_mesh_graph(mesh);
-  const std::vector<Index> features = extract_feature_points(graph).vertices;
+  const std::vector<Index> features = extract_feature_points(mesh, graph).vertices;
   const ReebInput in{mesh, graph, quotient_function(graph, features).value};
   const ReebGraph g = reference_reeb_graph(in.mesh, in.graph, in.fq);
   expect_consistent(g, in.mesh, in.fq);

@@ -30,7 +30,7 @@ inline ReebInput reeb_input(Mesh mesh) {
   ReebInput in;
   in.mesh = std::move(mesh);
   in.graph = build_mesh_graph(in.mesh);
-  in.fq = quotient_function(in.graph, extract_feature_points(in.graph).vertices).value;
+  in.fq = quotient_function(in.graph, extract_feature_points(in.mesh, in.graph).vertices).value;
   return in;
 }
 

@@ -116,13 +116,4 @@ Mesh make_capsule(double r, double half_length, int sides, int cap_rings) {
   return m;
 }
 
-Mesh renumbered(const Mesh& mesh, const std::vector<Index>& to) {
-  Mesh out = mesh;
-  for (Index v = 0; v < mesh.num_vertices(); ++v)
-    out.vertices.row(to[static_cast<std::size_t>(v)]) = mesh.vertices.row(v);
-  for (Index t = 0; t < mesh.num_triangles(); ++t)
-    for (int k = 0; k < 3; ++k) out.triangles(t, k) = to[static_cast<std::size_t>(mesh.triangles(t, k))];
-  return out;
-}
-
 }  // namespace reebkit::test

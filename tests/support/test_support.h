@@ -69,10 +69,6 @@ std::pair<int, std::string> run_with_file_size_limit(std::uint64_t bytes, const 
 /// hemisphere (its equator included), a pole at each end.
 Mesh make_capsule(double r, double half_length, int sides, int cap_rings);
 
-/// `mesh` with its vertices renumbered: vertex v becomes to[v] (a
-/// permutation), the triangles following.
-Mesh renumbered(const Mesh& mesh, const std::vector<Index>& to);
-
 }  // namespace reebkit::test
 
 /// Binds `var` to the unpacked shared dataset `folder`, or skips the test with

@@ -120,7 +120,10 @@ def sampling_section(work, report, out):
     out.append("Variants per mesh: decimation to 75/50/25 % of the vertices (quadric edge collapse, "
                "`decimate_mesh`), remeshing at 0.5x/1x/2x the vertex count (`remesh`: a new triangulation sharing "
                "no vertex), one midpoint subdivision (`subdivide_mesh`), Gaussian noise along the normals with "
-               "sigma 0.1/0.25/0.5/1 % of the bounding box diagonal (`add_normal_noise`). Groups: "
+               "sigma 0.1/0.25/0.5/1 % of the bounding box diagonal (`add_normal_noise`); every variant with its "
+               "vertices numbered anew (a random permutation, as another file of the surface would number them; "
+               "before 2026-11-28 the variants kept the original's numbering, which flattered a search that "
+               "starts at vertex 0). Groups: "
                + ", ".join(f"{g} ({len({r['mesh'] for r in rows if r['group'] == g})} meshes)" for g in groups) +
                ". *Repeatability*: share of the original's feature points with a variant point within 0.05 x the "
                "diameter after mapping the variant's points to the original (forward), and the reverse "
@@ -216,22 +219,23 @@ def sampling_section(work, report, out):
                "graph. No selection rule can pin a diameter end that the surface itself does not single out; the "
                "retrieval of these shapes rests on the whole-surface terms of the matching (g_s, g_g: "
                "docs/method.md), which do not depend on the ends.\n")
-    layout9 = [r for r in sampling_rows(work / "layout9") if r["kind"] != "pose"]
-    if layout9:
-        out.append("*Old and new*: each feature point halfway between the extremum of f1 and the extremum of f2 "
-                   "that eq. (6) joins (`--feature-site midpoint`, layout 10), against the point on the extremum "
-                   "that the greedy order takes (`--feature-site extremum`, layout 9), fast marching, the same "
-                   "variants. On a round tip the two extrema fall apart and the one taken switches with the "
-                   "sampling; their midpoint moves only as each of them does.\n")
-        out.append("| perturbation | originals | layout 9: forward | same nodes | layout 10: forward | same nodes |")
+    layout10 = [r for r in sampling_rows(work / "layout10") if r["kind"] != "pose"]
+    if layout10:
+        out.append("*Old and new*: the diameter search started at the vertex farthest from the area centroid "
+                   "(`--diameter-start centroid`, layout 11), against the search from vertex 0 "
+                   "(`--diameter-start vertex`, layout 10), fast marching, the same variants, each numbered anew. "
+                   "Vertex 0 lies wherever a file puts it, and the search from it ends on one or another of the "
+                   "nearly tied pairs of a symmetric shape; the vertex farthest from the centroid is the same "
+                   "point of the surface however it is numbered.\n")
+        out.append("| perturbation | originals | layout 10: forward | same nodes | layout 11: forward | same nodes |")
         out.append("|---|---|---:|---:|---:|---:|")
-        old = by_variant(layout9)
+        old = by_variant(layout10)
         for kind, strength in [("decimate", 0.5), ("remesh", 1.0)]:
             for name, pick in [("all", lambda rs: rs), ("3 or more", three_or_more)]:
                 a, b = summarize(pick(old[(kind, strength, "fmm")])), summarize(pick(table[(kind, strength, "fmm")]))
                 out.append(f"| {kind} {strength:g} | {name} | {pct(a['forward'])} | {pct(a['nodes'])} | "
                            f"{pct(b['forward'])} | {pct(b['nodes'])} |")
-        a = summarize([r for r in layout9 if r["method"] == "fmm"])
+        a = summarize([r for r in layout10 if r["method"] == "fmm"])
         b = summarize([r for r in rows if r["method"] == "fmm"])
         out.append(f"| every perturbation | all | {pct(a['forward'])} | {pct(a['nodes'])} | {pct(b['forward'])} | "
                    f"{pct(b['nodes'])} |")
@@ -261,8 +265,8 @@ def pose_section(work, report, out):
     out.append("*Claim* (section 4.1.1 and section 5.3, figures 9(c), 9(d)): geodesic distances make the feature "
                "points and the graph robust to model pose.\n")
     out.append("TOSCA (54 meshes, 5 classes): each pose against the first pose of its class (same triangulation, "
-               "vertex i corresponds: the points need no mapping), repeatability as in section 2 on the first "
-               "pose.\n")
+               "vertex i corresponds; each pose analysed with its vertices numbered anew, its points mapped back), "
+               "repeatability as in section 2 on the first pose.\n")
     out.append("| class | geodesic | poses | forward | backward | same nodes | same leaves | distance within | "
                "distance across |")
     out.append("|---|---|---:|---:|---:|---:|---:|---:|---:|")
@@ -279,7 +283,7 @@ def pose_section(work, report, out):
                        f"{mean(across):.3f} |")
     out.append("")
     lines = []
-    earlier = [(" with layout 9's feature points (on the extrema)", work / "layout9" / "tosca_poses.csv"),
+    earlier = [(" with layout 10's diameter search (from vertex 0)", work / "layout10" / "tosca_poses.csv"),
                (" with layout 8's feature points (epsilon 0.05, persistence 0.01, on the extrema)",
                 work / "layout8" / "tosca_poses.csv")]
     for name, table in [("", rows)] + [(n, read(p)) for n, p in earlier if p.exists()]:
@@ -429,12 +433,14 @@ def main():
            f"report `tools/figures/robustness_report.py`). The measurements took {total} s on "
            f"{cpu_name()} with 2 threads (the build not counted):\n"]
     out += [f"- {s['step']}: {s['seconds']} s" for s in steps if s["step"] != "total"] + [""]
-    out.append("Defaults (docs/method.md): geodesic distances by fast marching (`fmm`; the diameter search on "
-               "Dijkstra passes, its last sweep in fast marching), epsilon 0.15 and persistence filter 0.03 (one "
+    out.append("Defaults (docs/method.md): geodesic distances by fast marching (`fmm`, the diameter search "
+               "too), epsilon 0.15 and persistence filter 0.03 (one "
                "feature point per limb; the paper's 0.05 and reebkit's 0.01 before layout 9: docs/results.md, "
                "\"Feature points at the scale of a limb\", compares them), each feature point halfway between the "
                "extremum of f1 and the extremum of f2 that eq. (6) joins (`--feature-site midpoint`; on the extremum "
-               "before layout 10: sections 2 and 3 compare them), up to 3 extra sweeps, leaves only at the maxima of f_q (`--leaves maxima`: the pits of the propagation "
+               "before layout 10), the diameter search started at the vertex farthest from the area centroid "
+               "(`--diameter-start centroid`; from vertex 0 before layout 11: sections 2 and 3 compare them), up to "
+               "3 extra sweeps, leaves only at the maxima of f_q (`--leaves maxima`: the pits of the propagation "
                "cancelled; docs/results.md, \"Leaves at the maxima of f_q\", compares it with `propagation`). "
                "Dijkstra (`dijkstra`), the paper's method and reebkit's default before layout 7, is measured beside "
                "it in sections 2, 3 and 6: old and new side by side.\n")

@@ -20,6 +20,10 @@ namespace {
 
 constexpr Index kCanonicalSeed = 0;
 
+constexpr NamedValues<DiameterStart, 2> kDiameterStartNames{"diameter start",
+                                                            {{{DiameterStart::Vertex, "vertex"},
+                                                              {DiameterStart::Centroid, "centroid"}}}};
+
 constexpr NamedValues<FeatureSite, 2> kFeatureSiteNames{"feature site",
                                                         {{{FeatureSite::Extremum, "extremum"},
                                                           {FeatureSite::Midpoint, "midpoint"}}}};
@@ -222,18 +226,43 @@ Index geodesic_midpoint(GeodesicSolver& solver, Index a, Index b, double reach, 
 
 }  // namespace
 
+const char* diameter_start_name(DiameterStart start) { return kDiameterStartNames.name(start); }
+
+DiameterStart parse_diameter_start(const std::string& name) { return kDiameterStartNames.parse(name); }
+
 const char* feature_site_name(FeatureSite site) { return kFeatureSiteNames.name(site); }
 
 FeatureSite parse_feature_site(const std::string& name) { return kFeatureSiteNames.parse(name); }
 
-FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOptions& options) {
-  const std::unique_ptr<GeodesicSolver> solver = make_geodesic_solver(graph, options.geodesic);
-  return extract_feature_points(graph, options, *solver);
+Index farthest_from_centroid(const Mesh& mesh) {
+  const Index n = mesh.num_vertices();
+  if (n == 0) throw InvalidArgument("farthest_from_centroid: empty mesh");
+  Vec3 centroid = Vec3::Zero();
+  double area = 0.0;
+  for (Index t = 0; t < mesh.num_triangles(); ++t) {
+    const double a = triangle_area(mesh, t);
+    for (int k = 0; k < 3; ++k) centroid += (a / 3.0) * mesh.vertices.row(mesh.triangles(t, k)).transpose();
+    area += a;
+  }
+  centroid = area > 0.0 ? Vec3(centroid / area) : Vec3(mesh.vertices.colwise().mean().transpose());
+  std::vector<double> distance(static_cast<std::size_t>(n));
+  for (Index v = 0; v < n; ++v)
+    distance[static_cast<std::size_t>(v)] = (mesh.vertices.row(v).transpose() - centroid).norm();
+  return grid_farthest(distance);
 }
 
-FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOptions& options, GeodesicSolver& solver) {
+FeaturePoints extract_feature_points(const Mesh& mesh, const MeshGraph& graph, const FeatureOptions& options) {
+  const std::unique_ptr<GeodesicSolver> solver = make_geodesic_solver(graph, options.geodesic);
+  return extract_feature_points(mesh, graph, options, *solver);
+}
+
+FeaturePoints extract_feature_points(const Mesh& mesh, const MeshGraph& graph, const FeatureOptions& options,
+                                     GeodesicSolver& solver) {
   const Index n = graph.num_vertices();
   if (n == 0) throw InvalidArgument("extract_feature_points: empty mesh");
+  if (mesh.num_vertices() != n)
+    throw InvalidArgument("extract_feature_points: the mesh has " + std::to_string(mesh.num_vertices()) +
+                          " vertices and its graph " + std::to_string(n));
   if (options.start_vertex < 0 || options.start_vertex >= n)
     throw InvalidArgument("extract_feature_points: start vertex " + std::to_string(options.start_vertex) +
                           " out of range [0, " + std::to_string(n) + ")");
@@ -252,18 +281,21 @@ FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOption
   FeaturePoints out;
   out.geodesic = options.geodesic;
   DiameterEnds ends;
-  if (options.geodesic == Geodesic::Dijkstra) {
+  if (options.start == DiameterStart::Vertex && options.geodesic == Geodesic::Dijkstra) {
     ends = search_diameter_ends(solver, options, options.max_extra_sweeps, true);
   } else {
-    // A Dijkstra pass from v_r (and from options.start_vertex) picks v_s1;
-    // the sweep then runs in the chosen metric, with ties on the grid of the
-    // extrema below, so that the ends are extrema of f1 and f2 as they
-    // classify them. The farthest-point seeds are tried in that metric too:
-    // a seed's own pass says whether it leads to a longer diameter, and only
-    // then is the sweep run from it.
+    // v_s1 is the vertex farthest from the centroid (DiameterStart::Centroid)
+    // or, from v_r, the end of a Dijkstra pass (and from
+    // options.start_vertex); the sweep then runs in the chosen metric, with
+    // ties on the grid of the extrema below, so that the ends are extrema of
+    // f1 and f2 as they classify them. The farthest-point seeds are tried in
+    // that metric too: a seed's own pass says whether it leads to a longer
+    // diameter, and only then is the sweep run from it.
     Index start = kInvalidIndex;
     int passes = 0;
-    {  // the search's fields are freed before the sweep
+    if (options.start == DiameterStart::Centroid) {
+      start = farthest_from_centroid(mesh);
+    } else {  // the search's fields are freed before the sweep
       DijkstraSolver search(graph);
       FeatureOptions first = options;
       first.extra_seeds = 0;

@@ -3,6 +3,7 @@
 // functions (Tierny et al. 2006, section 4.1.2, Definition 5, eqs. 1-6).
 #pragma once
 
+#include "reebkit/core/mesh.h"
 #include "reebkit/geodesic/geodesic_solver.h"
 #include "reebkit/mesh/mesh_graph.h"
 
@@ -23,6 +24,24 @@ enum class FeatureSite {
   Midpoint,
 };
 
+/// Where the search for the diameter ends starts.
+enum class DiameterStart {
+  /// Eq. (2) from v_r = FeatureOptions::start_vertex (vertex 0 by default):
+  /// a pass from it takes v_s1 farthest from it (reebkit's rule before
+  /// layout 11). Vertex 0 lies wherever the file put it: the same surface
+  /// numbered otherwise can end on another pair of nearly tied ends.
+  Vertex,
+  /// v_s1 = the vertex farthest from the area centroid of the surface
+  /// (farthest_from_centroid): the same vertex however the mesh is numbered,
+  /// moved or scaled, and no pass to find it.
+  Centroid,
+};
+
+/// "vertex" or "centroid": the names of the option --diameter-start.
+const char* diameter_start_name(DiameterStart start);
+/// Inverse of diameter_start_name; throws InvalidArgument naming the accepted values.
+DiameterStart parse_diameter_start(const std::string& name);
+
 /// "extremum" or "midpoint": the names of the option --feature-site.
 const char* feature_site_name(FeatureSite site);
 /// Inverse of feature_site_name; throws InvalidArgument naming the accepted values.
@@ -38,11 +57,18 @@ struct FeatureOptions {
   /// point per prominent component, the same count across poses far more
   /// often (docs/results.md, "Feature points at the scale of a limb").
   double epsilon = 0.15;
-  /// v_r of eq. (2), where the search for the diameter ends starts. Eqs.
-  /// (2)-(4) take v_s1 farthest from v_r and v_s2 farthest from v_s1; reebkit
-  /// repeats that double sweep until the pair is mutually farthest, and runs
-  /// it from vertex 0 and `extra_seeds` more seeds too, keeping the longest pair (ties: smaller vertex ids).
-  /// So v_r changes the result only where it leads to a longer diameter.
+  /// Where the search for the diameter ends starts. Eqs. (2)-(4) take v_s1
+  /// farthest from v_r and v_s2 farthest from v_s1; reebkit repeats that
+  /// double sweep until the pair is mutually farthest, then tries
+  /// `extra_seeds` more seeds, keeping the longest pair. Centroid (the
+  /// default since layout 11) starts at the vertex farthest from the area
+  /// centroid as v_s1, so that the graph does not depend on the numbering
+  /// (docs/results.md, "A diameter search that does not depend on the
+  /// numbering").
+  DiameterStart start = DiameterStart::Centroid;
+  /// v_r of eq. (2) under DiameterStart::Vertex: the search runs from vertex
+  /// 0 and from v_r, keeping the longest pair (ties: smaller vertex ids), so
+  /// v_r changes the result only where it leads to a longer diameter.
   Index start_vertex = 0;
   /// At most this many extra passes per sweep (v_s1 <- v_s2, v_s2 <- the
   /// vertex farthest from it). 0 = the paper's single double sweep. Only a
@@ -119,14 +145,22 @@ struct FeaturePoints {
   std::vector<double> f1, f2;
 };
 
-/// Extracts the feature points of a connected mesh graph.
+/// The vertex of `mesh` farthest from its area centroid (the mean of the
+/// triangle centroids weighted by area; of the vertices, for a mesh without
+/// area), Euclidean distances compared on the grid kTieGrid x the largest,
+/// ties to the larger id: the start of DiameterStart::Centroid.
+Index farthest_from_centroid(const Mesh& mesh);
+
+/// Extracts the feature points of a connected mesh, whose graph is `graph`
+/// (build_mesh_graph(mesh)).
 /// \pre the graph is connected (one component) and non-empty; throws
 ///      InvalidArgument otherwise.
-FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOptions& options = {});
+FeaturePoints extract_feature_points(const Mesh& mesh, const MeshGraph& graph, const FeatureOptions& options = {});
 
 /// The same with a solver of method options.geodesic on `graph`, which the
 /// caller reuses for the steps that follow (f_q). Throws InvalidArgument for
 /// a solver of another method or graph.
-FeaturePoints extract_feature_points(const MeshGraph& graph, const FeatureOptions& options, GeodesicSolver& solver);
+FeaturePoints extract_feature_points(const Mesh& mesh, const MeshGraph& graph, const FeatureOptions& options,
+                                     GeodesicSolver& solver);
 
 }  // namespace reebkit

@@ -1,5 +1,7 @@
 #include "reebkit/mesh/transform.h"
 
+#include "reebkit/core/error.h"
+
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
@@ -9,6 +11,7 @@
 
 #include <cmath>
 #include <random>
+#include <string>
 
 namespace reebkit {
 
@@ -41,6 +44,37 @@ Mesh transformed(const Mesh& mesh, const Similarity& transform) {
   for (Eigen::Index v = 0; v < out.vertices.rows(); ++v)
     out.vertices.row(v) = (m * mesh.vertices.row(v).transpose() + transform.translation).transpose();
   return out;
+}
+
+Mesh renumbered(const Mesh& mesh, const std::vector<Index>& to) {
+  const auto n = static_cast<std::size_t>(mesh.num_vertices());
+  std::vector<char> taken(n, 0);
+  bool permutation = to.size() == n;
+  for (std::size_t v = 0; permutation && v < n; ++v) {
+    const Index w = to[v];
+    permutation = w >= 0 && static_cast<std::size_t>(w) < n && !taken[static_cast<std::size_t>(w)];
+    if (permutation) taken[static_cast<std::size_t>(w)] = 1;
+  }
+  if (!permutation)
+    throw InvalidArgument("renumbered: " + (mesh.source.empty() ? std::string("the mesh") : mesh.source) +
+                          ": the new numbering is not a permutation of its " + std::to_string(n) + " vertices");
+  Mesh out = mesh;
+  for (Index v = 0; v < mesh.num_vertices(); ++v) {
+    const Index w = to[static_cast<std::size_t>(v)];
+    out.vertices.row(w) = mesh.vertices.row(v);
+    if (!mesh.source_vertex.empty()) out.source_vertex[static_cast<std::size_t>(w)] = mesh.source_index(v);
+  }
+  for (Index t = 0; t < mesh.num_triangles(); ++t)
+    for (int k = 0; k < 3; ++k) out.triangles(t, k) = to[static_cast<std::size_t>(mesh.triangles(t, k))];
+  return out;
+}
+
+std::vector<Index> random_permutation(Index n, std::uint64_t seed) {
+  std::vector<Index> order(static_cast<std::size_t>(std::max<Index>(n, 0)));
+  std::iota(order.begin(), order.end(), 0);
+  std::mt19937_64 rng(seed);
+  std::shuffle(order.begin(), order.end(), rng);
+  return order;
 }
 
 CanonicalCopy canonical_copy(const Mesh& mesh) {

@@ -32,6 +32,15 @@ Similarity random_similarity(const Mesh& mesh, std::mt19937_64& rng);
 /// A copy of `mesh` with every vertex transformed; connectivity unchanged.
 Mesh transformed(const Mesh& mesh, const Similarity& transform);
 
+/// `mesh` with its vertices renumbered: vertex v becomes to[v], the
+/// triangles and source_vertex following; the same surface, numbered as
+/// another file of it could be. Throws InvalidArgument unless `to` is a
+/// permutation of 0 .. #V - 1.
+Mesh renumbered(const Mesh& mesh, const std::vector<Index>& to);
+
+/// A permutation of 0 .. n - 1, repeatable for a given seed.
+std::vector<Index> random_permutation(Index n, std::uint64_t seed);
+
 /// A mesh in a frame of its own (canonical_copy).
 struct CanonicalCopy {
   Mesh mesh;

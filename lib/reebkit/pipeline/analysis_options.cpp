@@ -12,6 +12,10 @@ static OptionValue option_value_of(Geodesic method) { return std::string(geodesi
 static OptionValue option_value_of(LevelLines lines) { return std::string(level_lines_name(lines)); }
 static OptionValue option_value_of(Leaves leaves) { return std::string(leaves_name(leaves)); }
 static OptionValue option_value_of(FeatureSite site) { return std::string(feature_site_name(site)); }
+static OptionValue option_value_of(DiameterStart start) { return std::string(diameter_start_name(start)); }
+static void set_from_option(const OptionValue& value, DiameterStart& start) {
+  start = parse_diameter_start(std::get<std::string>(value));
+}
 static void set_from_option(const OptionValue& value, FeatureSite& site) {
   site = parse_feature_site(std::get<std::string>(value));
 }
@@ -51,8 +55,13 @@ const std::vector<AnalysisOptionField>& analysis_option_fields() {
       field("min_persistence", "drop the extrema of f1 and f2 whose topological persistence is below this "
             "fraction of the geodesic diameter before the relaxed intersection (0: every local extremum, as the "
             "paper)", [](auto& o) -> auto& { return o.features.min_persistence; }, OptionRange{0, 1}),
-      field("start_vertex", "start vertex v_r of the diameter search, eq. (2) (index in the cleaned mesh)",
+      field("start_vertex", "start vertex v_r of the diameter search under diameter_start vertex, eq. (2) (index "
+            "in the cleaned mesh)",
             [](auto& o) -> auto& { return o.features.start_vertex; }, OptionRange{0}),
+      field("diameter_start", "where the diameter search starts: centroid (v_s1 is the vertex farthest from the "
+            "area centroid, the default: the same however the mesh is numbered) or vertex (a pass from "
+            "start_vertex, layout 10 and before)",
+            [](auto& o) -> auto& { return o.features.start; }),
       field("max_extra_sweeps", "extra passes per diameter sweep at most (0: the paper's single double sweep)",
             [](auto& o) -> auto& { return o.features.max_extra_sweeps; }, OptionRange{0}),
       field("extra_seeds", "further diameter sweeps from farthest-point seeds",
@@ -88,7 +97,7 @@ AnalysisOptions analysis_options_from(const std::vector<NamedOption>& named) {
   AnalysisOptions options;
   // Files written before an option existed were analysed as it was then:
   // level_lines with Definition 6, leaves with every termination, the
-  // feature points on their extrema.
+  // feature points on their extrema, the diameter search from vertex 0.
   const auto lacks = [&named](const char* name) {
     return !named.empty() &&
            std::none_of(named.begin(), named.end(), [name](const NamedOption& option) { return option.name == name; });
@@ -96,6 +105,7 @@ AnalysisOptions analysis_options_from(const std::vector<NamedOption>& named) {
   if (lacks("level_lines")) options.reeb.level_lines = LevelLines::Paper;
   if (lacks("leaves")) options.reeb.leaves = Leaves::Propagation;
   if (lacks("feature_site")) options.features.site = FeatureSite::Extremum;
+  if (lacks("diameter_start")) options.features.start = DiameterStart::Vertex;
   for (const NamedOption& option : named) {
     const AnalysisOptionField* f = find_option(analysis_option_fields(), option.name);
     if (!f) throw InvalidArgument("unknown analysis option '" + option.name + "'");

@@ -27,7 +27,7 @@ MeshAnalysis analyze_mesh(Mesh mesh, const AnalysisOptions& options) {
       [&] {
         {  // one solver for the feature points and f_q, freed before the Reeb graph
           const std::unique_ptr<GeodesicSolver> solver = make_geodesic_solver(a.graph, options.features.geodesic);
-          a.features = extract_feature_points(a.graph, options.features, *solver);
+          a.features = extract_feature_points(a.mesh, a.graph, options.features, *solver);
           a.timings.features = timer.lap();
           a.fq = quotient_function(*solver, a.features.vertices);
           a.timings.quotient = timer.lap();

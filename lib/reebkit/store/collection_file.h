@@ -33,8 +33,11 @@ namespace reebkit {
 /// feature points of eq. (6) at epsilon 0.15 and min_persistence 0.03 by
 /// default (one point per prominent component), so other graphs. 10: the
 /// same columns; each feature point halfway between its extrema of f1 and
-/// f2 (FeatureSite::Midpoint) by default, so other graphs.
-inline constexpr int kCollectionLayoutVersion = 10;
+/// f2 (FeatureSite::Midpoint) by default, so other graphs. 11: the same
+/// columns; the diameter search starts at the vertex farthest from the area
+/// centroid (DiameterStart::Centroid) by default, not at vertex 0, so other
+/// graphs.
+inline constexpr int kCollectionLayoutVersion = 11;
 
 /// Where the file came from: file attributes, and two groups.
 struct Provenance {
