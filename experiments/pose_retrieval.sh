@@ -89,7 +89,7 @@ body_shapes=$build/experiments/body_shapes
 # the parts body_shapes changes): layout 9's, pinned, since a benchmark must
 # not move with the defaults of the method it measures. The same options as
 # body_shapes' --option NAME=VALUE and as reeb perturb's --name VALUE.
-planning=(geodesic=fmm epsilon=0.15 min_persistence=0.03 feature_site=extremum level_lines=contour leaves=maxima)
+planning=(geodesic=fmm epsilon=0.15 min_persistence=0.03 feature_site=extremum diameter_start=vertex level_lines=contour leaves=maxima)
 planning_options=() planning_flags=""
 for option in "${planning[@]}"; do
   planning_options+=(--option "$option")

@@ -297,7 +297,7 @@ def pose_section(work, report, out):
     shrec_pose = [r for r in sampling_rows(work) if r["kind"] == "pose"]
     if shrec_pose:
         out.append("`--pose` variants (two leaf components turned by 20-35 degrees, `random_pose`, seeds 1 and 2; "
-                   "vertex i corresponds):\n")
+                   "numbered anew like the other variants):\n")
         out.append("| group | geodesic | variants | forward | backward | same nodes | mean distance | rank 1 |")
         out.append("|---|---|---:|---:|---:|---:|---:|---:|")
         for g in sorted({r["group"] for r in shrec_pose}):
