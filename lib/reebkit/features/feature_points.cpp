@@ -285,10 +285,10 @@ FeaturePoints extract_feature_points(const Mesh& mesh, const MeshGraph& graph, c
     ends = search_diameter_ends(solver, options, options.max_extra_sweeps, true);
   } else {
     // v_s1 is the vertex farthest from the centroid (DiameterStart::Centroid)
-    // or, from v_r, the end of a Dijkstra pass (and from
-    // options.start_vertex); the sweep then runs in the chosen metric, with
-    // ties on the grid of the extrema below, so that the ends are extrema of
-    // f1 and f2 as they classify them. The farthest-point seeds are tried in
+    // or the end of a Dijkstra search from vertex 0 and from
+    // options.start_vertex, v_r (DiameterStart::Vertex); the sweep then runs
+    // in the chosen metric, with ties on the grid of the extrema below, so
+    // that the ends are extrema of f1 and f2 as they classify them. The farthest-point seeds are tried in
     // that metric too: a seed's own pass says whether it leads to a longer
     // diameter, and only then is the sweep run from it.
     Index start = kInvalidIndex;
