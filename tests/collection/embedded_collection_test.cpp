@@ -39,10 +39,10 @@ struct PinnedGraph {
 // eight 2, elk 1, the others 0 = their genus). Update here, and only here,
 // when the graph or the attributes change on purpose.
 constexpr PinnedGraph kPinned[] = {
-    {"anchor.off", 15, 2, 4, 0xbc5945ed469184a6ull}, {"bunny.off", 5, 3, 0, 0x507edd13fe9e0cc3ull},
-    {"cactus.off", 7, 4, 0, 0xabeb45c910624136ull},  {"cow.off", 17, 9, 0, 0x493aff8fc4f9d3c8ull},
-    {"eight.off", 9, 2, 2, 0xe14325853d7a795aull},   {"elk.off", 14, 6, 1, 0x8224fb8494c329aaull},
-    {"hand.off", 3, 2, 0, 0x8c8605dcea080c48ull},    {"helmet.off", 12, 2, 3, 0xd73effec07a0d75aull},
+    {"anchor.off", 15, 2, 4, 0x781ad358ccee8727ull}, {"bunny.off", 5, 3, 0, 0x5f4bca33171d5535ull},
+    {"cactus.off", 7, 4, 0, 0xabeb45c910624136ull},  {"cow.off", 17, 9, 0, 0x19cb997c24b1ccaaull},
+    {"eight.off", 9, 2, 2, 0xe14325853d7a795aull},   {"elk.off", 14, 6, 1, 0xc9fbb3c6a9e2f269ull},
+    {"hand.off", 3, 2, 0, 0xd7f7944448d13604ull},    {"helmet.off", 12, 2, 3, 0xd73effec07a0d75aull},
 };
 
 // Retrieval on the variants collection (48 meshes, 8 classes of 6), as the

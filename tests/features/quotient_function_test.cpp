@@ -3,6 +3,7 @@
 #include "reebkit/core/error.h"
 #include "reebkit/features/feature_points.h"
 #include "reebkit/geodesic/dijkstra.h"
+#include "reebkit/geodesic/fast_marching.h"
 #include "reebkit/mesh/shapes.h"
 #include "reebkit/mesh/transform.h"
 
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace reebkit {
 namespace {
@@ -69,6 +71,76 @@ TEST(QuotientFunction, InvariantToSimilarityTransforms) {
   const QuotientFunction moved = quotient_function(build_mesh_graph(transformed(mesh, t)), fp.vertices);
   for (Index v = 0; v < g.num_vertices(); ++v) EXPECT_EQ(moved.value[v], reference.value[v]);
   EXPECT_NEAR(moved.normalization, 37.5 * reference.normalization, 1e-9);
+}
+
+// After the feature step, f_q keeps the diameter ends' fields (f1, f2) and
+// measures only the other points' Voronoi cells: with Dijkstra exactly the
+// multi-source pass, with fast marching the same but where two cells meet.
+TEST(QuotientFunction, ReusingTheEndsFieldsGivesTheMultiSourcePass) {
+  const Mesh mesh = make_star(StarOptions{});
+  const MeshGraph g = build_mesh_graph(mesh);
+  for (const Geodesic method : {Geodesic::Dijkstra, Geodesic::FastMarching}) {
+    SCOPED_TRACE(geodesic_name(method));
+    FeatureOptions options;
+    options.geodesic = method;
+    const std::unique_ptr<GeodesicSolver> solver = make_geodesic_solver(g, method);
+    const FeaturePoints fp = extract_feature_points(mesh, g, options, *solver);
+    ASSERT_EQ(fp.vertices.size(), 5u);  // a tip per arm, the ends among them
+    const QuotientFunction reused = quotient_function(*solver, fp);
+    const QuotientFunction whole = quotient_function(g, fp.vertices, method);
+    EXPECT_EQ(whole.pass_share, 1.0);
+    // Three of the five arms' cells: about three fifths of the surface.
+    EXPECT_GT(reused.pass_share, 0.4);
+    EXPECT_LT(reused.pass_share, 0.8);
+    Index differ = 0;
+    for (Index v = 0; v < g.num_vertices(); ++v) {
+      if (method == Geodesic::Dijkstra) {
+        EXPECT_EQ(reused.value[v], whole.value[v]);
+        EXPECT_EQ(reused.nearest_feature[v], whole.nearest_feature[v]);
+      } else {
+        EXPECT_NEAR(reused.value[v], whole.value[v], 1e-3);
+        differ += reused.value[v] != whole.value[v];
+      }
+    }
+    if (method == Geodesic::FastMarching) {
+      EXPECT_LT(differ, g.num_vertices() / 20);  // the cells' borders only
+    }
+    EXPECT_EQ(reused.normalization, whole.normalization);
+    for (std::size_t i = 0; i < fp.vertices.size(); ++i) EXPECT_EQ(reused.value[fp.vertices[i]], 1.0);
+  }
+}
+
+// Where the diameter ends are the only feature points, f_q is 1 - min(f1,
+// f2) / max and no pass runs.
+TEST(QuotientFunction, TwoEndsNeedNoPass) {
+  StarOptions two;
+  two.arms = 2;
+  const Mesh mesh = make_star(two);
+  const MeshGraph g = build_mesh_graph(mesh);
+  const std::unique_ptr<GeodesicSolver> solver = make_geodesic_solver(g, Geodesic::FastMarching);
+  const FeaturePoints fp = extract_feature_points(mesh, g, {}, *solver);
+  ASSERT_EQ(fp.vertices.size(), 2u);
+  const QuotientFunction fq = quotient_function(*solver, fp);
+  EXPECT_EQ(fq.pass_share, 0.0);
+  double top = 0.0;
+  for (Index v = 0; v < g.num_vertices(); ++v) top = std::max(top, std::min(fp.f1[v], fp.f2[v]));
+  EXPECT_EQ(fq.normalization, top);
+  for (Index v = 0; v < g.num_vertices(); ++v)
+    EXPECT_NEAR(fq.value[v], 1.0 - std::min(fp.f1[v], fp.f2[v]) / top, 0.5 / 16777216.0);
+}
+
+TEST(QuotientFunction, RejectsFieldsOfAnotherMethodOrSize) {
+  const Mesh mesh = make_star(StarOptions{});
+  const MeshGraph g = build_mesh_graph(mesh);
+  const FeaturePoints fp = extract_feature_points(mesh, g);  // fast marching
+  DijkstraSolver dijkstra(g);
+  EXPECT_THROW(quotient_function(dijkstra, fp), InvalidArgument);
+  FeaturePoints cut = fp;
+  cut.f2.pop_back();
+  FastMarchingSolver fmm(g);
+  EXPECT_THROW(quotient_function(fmm, cut), InvalidArgument);
+  cut.vertices.clear();
+  EXPECT_THROW(quotient_function(fmm, cut), InvalidArgument);
 }
 
 TEST(QuotientFunction, RejectsEmptyFeatureList) {

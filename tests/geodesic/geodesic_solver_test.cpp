@@ -11,6 +11,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <type_traits>
+
 namespace reebkit {
 namespace {
 
@@ -40,6 +43,45 @@ TYPED_TEST(EveryGeodesicSolver, RadiusBoundStopsTheSearchWithoutChangingDistance
   EXPECT_EQ(near.reached, inside);
   EXPECT_GT(inside, 1);
   EXPECT_LT(inside, g.num_vertices());
+}
+
+// A bound (the field of other sources) confines the run to where its own
+// sources are strictly nearer: their Voronoi cells. Dijkstra's distances
+// there are those of the unbounded run exactly; fast marching's may differ
+// along the border of the cell, whose outer triangles the bounded front does
+// not use.
+TYPED_TEST(EveryGeodesicSolver, BoundConfinesTheRunToTheCellsOfItsSources) {
+  const MeshGraph g = build_mesh_graph(resample_mesh(make_torus(24, 10)));
+  const std::vector<double> bound = run_once<TypeParam>(g, {0}, {}).distance;
+  const DistanceField free = run_once<TypeParam>(g, {0, 200}, {});
+  GeodesicOptions options;
+  options.bound = &bound;
+  TypeParam solver(g);
+  const DistanceField& cell = solver.run({0, 200}, options);  // vertex 0 is the bound's own source: not seeded
+  const bool exact = std::is_same_v<TypeParam, DijkstraSolver>;
+  double longest = 0.0;
+  for (const double x : g.length) longest = std::max(longest, x);
+  Index inside = 0;
+  for (Index v = 0; v < g.num_vertices(); ++v) {
+    if (cell.distance[v] < kInf) {
+      ++inside;
+      EXPECT_LT(cell.distance[v], bound[v]);
+      EXPECT_EQ(cell.nearest_source[v], 1);
+      if (exact) {
+        EXPECT_EQ(cell.distance[v], free.distance[v]);
+      }
+    } else if (exact) {  // the unbounded run found vertex 0 nearer, or tied
+      EXPECT_GE(free.distance[v], bound[v]);
+    } else {  // fast marching: only at the border, within an edge
+      EXPECT_GE(free.distance[v], bound[v] - longest);
+    }
+  }
+  EXPECT_EQ(cell.reached, inside);
+  EXPECT_GT(inside, g.num_vertices() / 10);
+  EXPECT_LT(inside, g.num_vertices() * 9 / 10);
+  const std::vector<double> too_few(3, 1.0);
+  options.bound = &too_few;
+  EXPECT_THROW(solver.run({200}, options), InvalidArgument);
 }
 
 TYPED_TEST(EveryGeodesicSolver, ReuseGivesTheSameFieldsAsFreshRuns) {

@@ -3,7 +3,7 @@
 namespace reebkit {
 
 const DistanceField& DijkstraSolver::run(const std::vector<Index>& sources, const DijkstraOptions& options) {
-  const auto [labels, dist, nearest, offset, neighbor, length] = start(sources, options, "dijkstra");
+  const auto [labels, dist, nearest, offset, neighbor, length, bound] = start(sources, options, "dijkstra");
   while (!heap_.empty()) {
     const auto [d, v] = heap_.pop();
     if (d > dist[v]) continue;  // stale entry
@@ -12,7 +12,7 @@ const DistanceField& DijkstraSolver::run(const std::vector<Index>& sources, cons
       const Index w = neighbor[i];
       if (labels && labels[w] != options.label) continue;
       const double dw = d + length[i];
-      if (dw < dist[w] && dw <= options.radius) improve(w, dw, nearest[v]);
+      if (dw < dist[w] && within(dw, w, options.radius, bound)) improve(w, dw, nearest[v]);
     }
   }
   return finish();

@@ -197,7 +197,7 @@ FastMarchingSolver::FastMarchingSolver(const MeshGraph& graph)
 
 const DistanceField& FastMarchingSolver::run(const std::vector<Index>& sources, const GeodesicOptions& options) {
   for (const Index v : settled_) alive_[static_cast<std::size_t>(v)] = 0;
-  const auto [labels, dist, nearest, offset, neighbor, length] = start(sources, options, "fast_marching");
+  const auto [labels, dist, nearest, offset, neighbor, length, bound] = start(sources, options, "fast_marching");
   const std::uint8_t* link_next = graph_.link_next.data();
   const double* link_length = link_length_.data();
   std::uint8_t* alive = alive_.data();
@@ -230,7 +230,7 @@ const DistanceField& FastMarchingSolver::run(const std::vector<Index>& sources, 
           source = nearer_v ? nearest[v] : nearest[u];
         }
       }
-      if (source != kInvalidIndex && best <= options.radius) improve(w, best, source);
+      if (source != kInvalidIndex && within(best, w, options.radius, bound)) improve(w, best, source);
     }
     for (Index k = virtual_offset_[static_cast<std::size_t>(v)]; k < virtual_offset_[static_cast<std::size_t>(v) + 1];
          ++k) {
@@ -243,7 +243,7 @@ const DistanceField& FastMarchingSolver::run(const std::vector<Index>& sources, 
       double t;
       bool nearer_v;
       if (triangle_update(d, dist[u], vt.to_target, vt.other_to_target, vt.to_other, dist[w], t, nearer_v) &&
-          t < dist[w] && t <= options.radius)
+          t < dist[w] && within(t, w, options.radius, bound))
         improve(w, t, nearer_v ? nearest[v] : nearest[u]);
     }
   }

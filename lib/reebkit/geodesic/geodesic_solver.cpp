@@ -46,6 +46,10 @@ GeodesicSolver::RunArrays GeodesicSolver::start(const std::vector<Index>& source
   if (labels && options.labels->size() != static_cast<std::size_t>(n))
     throw InvalidArgument(std::string(who) + ": " + std::to_string(options.labels->size()) + " vertex labels for " +
                           std::to_string(n) + " vertices");
+  const double* bound = options.bound ? options.bound->data() : nullptr;
+  if (bound && options.bound->size() != static_cast<std::size_t>(n))
+    throw InvalidArgument(std::string(who) + ": a bound of " + std::to_string(options.bound->size()) +
+                          " distances for " + std::to_string(n) + " vertices");
   for (std::size_t s = 0; s < sources.size(); ++s) {
     const Index v = sources[s];
     if (v < 0 || v >= n)
@@ -56,6 +60,7 @@ GeodesicSolver::RunArrays GeodesicSolver::start(const std::vector<Index>& source
                             std::to_string(labels[v]) + ", the search is restricted to label " +
                             std::to_string(options.label));
     if (field_.nearest_source[static_cast<std::size_t>(v)] != kInvalidIndex) continue;  // listed twice
+    if (bound && !(0.0 < bound[v])) continue;  // a source the bound measured already
     improve(v, 0.0, static_cast<Index>(s));
   }
   return {labels,
@@ -63,7 +68,8 @@ GeodesicSolver::RunArrays GeodesicSolver::start(const std::vector<Index>& source
           field_.nearest_source.data(),
           graph_.offset.data(),
           graph_.neighbor.data(),
-          graph_.length.data()};
+          graph_.length.data(),
+          bound};
 }
 
 DistanceField GeodesicSolver::release() {

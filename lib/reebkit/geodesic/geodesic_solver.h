@@ -49,6 +49,12 @@ struct GeodesicOptions {
   /// curve, a region), whose neighbouring samples' fronts combine into one
   /// (a plane wave from a line of sources). Dijkstra is the same either way.
   bool separate_sources = false;
+  /// Distances already known from other sources (#V): a vertex is reached
+  /// only where the sources are strictly nearer than bound[v], so the run
+  /// covers their Voronoi cells against the sources the bound measured (f_q
+  /// with the fields of the diameter ends, quotient_function.h). nullptr
+  /// (default): no bound.
+  const std::vector<double>* bound = nullptr;
 };
 
 /// Result of a (multi-source) geodesic pass.
@@ -100,7 +106,14 @@ class GeodesicSolver {
     const Index* offset;
     const Index* neighbor;
     const double* length;
+    const double* bound;  ///< nullptr without GeodesicOptions::bound
   };
+
+  /// Whether distance `dw` at vertex `w` is within the run's reach: the
+  /// radius, and below the bound where there is one.
+  static bool within(double dw, Index w, double radius, const double* bound) {
+    return dw <= radius && (bound == nullptr || dw < bound[w]);
+  }
 
   /// Resets what the previous run reached, checks the options and the
   /// sources (`who` names the method in error messages) and puts every

@@ -29,7 +29,7 @@ MeshAnalysis analyze_mesh(Mesh mesh, const AnalysisOptions& options) {
           const std::unique_ptr<GeodesicSolver> solver = make_geodesic_solver(a.graph, options.features.geodesic);
           a.features = extract_feature_points(a.mesh, a.graph, options.features, *solver);
           a.timings.features = timer.lap();
-          a.fq = quotient_function(*solver, a.features.vertices);
+          a.fq = quotient_function(*solver, a.features);
           a.timings.quotient = timer.lap();
         }
         if (options.reeb_graph) {

@@ -36,8 +36,10 @@ namespace reebkit {
 /// f2 (FeatureSite::Midpoint) by default, so other graphs. 11: the same
 /// columns; the diameter search starts at the vertex farthest from the area
 /// centroid (DiameterStart::Centroid) by default, not at vertex 0, so other
-/// graphs.
-inline constexpr int kCollectionLayoutVersion = 11;
+/// graphs. 12: the same columns; f_q keeps the diameter ends' distance
+/// fields and measures only the other feature points' Voronoi cells
+/// (quotient_function.h), so the attributes differ where two cells meet.
+inline constexpr int kCollectionLayoutVersion = 12;
 
 /// Where the file came from: file attributes, and two groups.
 struct Provenance {
