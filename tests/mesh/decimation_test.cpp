@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace reebkit {
 namespace {
 
@@ -33,6 +35,29 @@ TEST(Decimation, HitsTheTargetCountAndKeepsTheSurface) {
       for (Index v = 0; v < out.mesh.num_vertices(); ++v)
         EXPECT_EQ(out.mesh.vertices.row(v), mesh.vertices.row(out.original_vertex[static_cast<std::size_t>(v)]));
     }
+}
+
+// A patch with a border, as the regions whose spectra are computed: the
+// first try keeps too many vertices (the collapses spare the border), and
+// with refine_last_try the next tries decimate that copy further. The target
+// is met, and the kept vertices are the mesh's own, as from the whole mesh.
+TEST(Decimation, RefiningTheLastTryHitsTheTargetOnAPatchWithABorder) {
+  Mesh patch = make_grid(60, 60, 1.0 / 60);
+  for (Index v = 0; v < patch.num_vertices(); ++v)
+    patch.vertices(v, 2) = 0.2 * std::sin(6.0 * patch.vertices(v, 0)) * std::cos(5.0 * patch.vertices(v, 1));
+  for (const double ratio : {0.3, 0.1, 0.03}) {
+    DecimationOptions options{ratio, 0.05};
+    options.refine_last_try = true;
+    const MeshVariant out = decimate_mesh(patch, options);
+    const double target = ratio * patch.num_vertices();
+    EXPECT_NEAR(out.mesh.num_vertices(), target, 0.05 * target + 1) << "ratio " << ratio;
+    EXPECT_EQ(connected_components(out.mesh.triangles, out.mesh.num_vertices()).count, 1);
+    EXPECT_LT(one_sided_distance(out.mesh, patch), 0.01 * bounding_box_diagonal(patch)) << "ratio " << ratio;
+    EXPECT_LT(one_sided_distance(patch, out.mesh), 0.02 * bounding_box_diagonal(patch)) << "ratio " << ratio;
+    ASSERT_EQ(out.original_vertex.size(), static_cast<std::size_t>(out.mesh.num_vertices()));
+    for (Index v = 0; v < out.mesh.num_vertices(); ++v)
+      EXPECT_EQ(out.mesh.vertices.row(v), patch.vertices.row(out.original_vertex[static_cast<std::size_t>(v)]));
+  }
 }
 
 TEST(Decimation, RatioOneKeepsTheMeshAndBadRatiosThrow) {

@@ -88,12 +88,16 @@ Index triangle_region(const Mesh& mesh, const std::vector<Index>& label, Index t
   return a == b || a == c ? a : b == c ? b : kInvalidIndex;
 }
 
-/// `m` decimated to `ratio` of its vertices (within `tolerance`); `m` itself
-/// where the decimation leaves a triangle it cannot repair or cuts `m` in two
-/// (a thin part collapsed: each further piece adds a zero eigenvalue).
+/// `m` decimated to `ratio` of its vertices (within `tolerance`; a try that
+/// keeps too many is decimated further, DecimationOptions::refine_last_try);
+/// `m` itself where the decimation leaves a triangle it cannot repair or
+/// cuts `m` in two (a thin part collapsed: each further piece adds a zero
+/// eigenvalue).
 MeshVariant decimated_or_whole(const Mesh& m, double ratio, double tolerance) {
   if (ratio < 1.0) try {
-      MeshVariant coarse = decimate_mesh(m, {ratio, tolerance});
+      DecimationOptions options{ratio, tolerance};
+      options.refine_last_try = true;
+      MeshVariant coarse = decimate_mesh(m, options);
       if (connected_components(coarse.mesh.triangles, coarse.mesh.num_vertices()).count == 1) return coarse;
     } catch (const InvalidMeshError&) {
     }

@@ -53,6 +53,33 @@ std::vector<unsigned> without_fins(const std::vector<unsigned>& indices) {
   return out;
 }
 
+/// What a try simplifies: triangles on their own vertices, `vertex` (when
+/// not empty) the mesh's vertex that each is.
+struct Coarser {
+  std::vector<unsigned> indices;
+  std::vector<float> positions;
+  std::vector<unsigned> vertex;
+};
+
+/// The triangles `indices` (of the mesh's vertices, `positions`) on the
+/// vertices they use alone, so that simplifying them costs what their size
+/// does, not what the mesh's does.
+Coarser coarser(const std::vector<unsigned>& indices, const std::vector<float>& positions) {
+  Coarser out;
+  std::vector<unsigned> local(positions.size() / 3, ~0u);
+  out.indices.reserve(indices.size());
+  for (const unsigned v : indices) {
+    if (local[v] == ~0u) {
+      local[v] = static_cast<unsigned>(out.vertex.size());
+      out.vertex.push_back(v);
+      out.positions.insert(out.positions.end(), positions.begin() + 3 * static_cast<std::ptrdiff_t>(v),
+                           positions.begin() + 3 * static_cast<std::ptrdiff_t>(v) + 3);
+    }
+    out.indices.push_back(local[v]);
+  }
+  return out;
+}
+
 std::size_t used_vertices(const std::vector<unsigned>& indices, std::size_t num_vertices) {
   std::vector<char> used(num_vertices, 0);
   for (const unsigned v : indices) used[v] = 1;
@@ -84,10 +111,19 @@ MeshVariant decimate_mesh(const Mesh& mesh, const DecimationOptions& options) {
     // Steered by triangles (Euler: #F/#V stays about constant), corrected
     // from the vertex count each try gives.
     double triangles = static_cast<double>(mesh.num_triangles()) * options.vertex_ratio;
+    Coarser from{indices, positions, {}};
     for (int attempt = 0; attempt < 6; ++attempt) {
-      kept = without_fins(simplify(indices, positions, static_cast<std::size_t>(std::max(1.0, std::round(triangles)))));
+      const double most = static_cast<double>(from.indices.size() / 3);  // meshoptimizer adds no triangle
+      kept = without_fins(simplify(from.indices, from.positions,
+                                   static_cast<std::size_t>(std::clamp(std::round(triangles), 1.0, most))));
+      if (!from.vertex.empty())
+        for (unsigned& v : kept) v = from.vertex[v];
       const auto got = static_cast<double>(used_vertices(kept, nv));
       if (std::abs(got - static_cast<double>(target)) <= options.tolerance * static_cast<double>(target)) break;
+      if (options.refine_last_try && got > static_cast<double>(target)) {
+        from = coarser(kept, positions);
+        triangles = static_cast<double>(kept.size() / 3);  // steered from the copy's own count
+      }
       triangles *= static_cast<double>(target) / std::max(got, 1.0);
     }
   }

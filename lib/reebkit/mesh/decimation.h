@@ -23,6 +23,14 @@ struct DecimationOptions {
   /// on fine detail (an ear, a finger), which no flip or collapse could
   /// remove without folding the surface.
   double min_triangle_area = 1e-6;
+  /// A try that keeps too many vertices is decimated further by the next
+  /// try (with the quadrics of that coarser copy), instead of the next one
+  /// starting again from the whole mesh: each further try then costs what
+  /// the copy's size does. Regions cut with a border miss their target on
+  /// the first try nearly always, and always on the side of too many
+  /// vertices (the collapses spare the border). false: every try from the
+  /// whole mesh (the robustness experiments' variants).
+  bool refine_last_try = false;
 };
 
 /// `mesh` decimated by quadric edge collapse to about vertex_ratio x #V
