@@ -52,8 +52,9 @@ struct GeodesicOptions {
   /// Distances already known from other sources (#V): a vertex is reached
   /// only where the sources are strictly nearer than bound[v], so the run
   /// covers their Voronoi cells against the sources the bound measured (f_q
-  /// with the fields of the diameter ends, quotient_function.h). nullptr
-  /// (default): no bound.
+  /// with the fields of the diameter ends, quotient_function.h); a source
+  /// whose bound is 0 (one the bound measured) is not seeded. Holds #V
+  /// distances. nullptr (default): no bound.
   const std::vector<double>* bound = nullptr;
 };
 
