@@ -66,16 +66,10 @@ QuotientFunction quotient_function(GeodesicSolver& solver, const FeaturePoints& 
   std::vector<double> distance(n, std::numeric_limits<double>::infinity());
   std::vector<Index> nearest(n, kInvalidIndex);
   std::vector<Index> others, other_index;
-  bool used1 = false, used2 = false;
   for (std::size_t i = 0; i < points.size(); ++i) {
-    const std::vector<double>* field = nullptr;
-    if (points[i] == features.source1 && !used1) {
-      field = &features.f1;
-      used1 = true;
-    } else if (points[i] == features.source2 && !used2) {
-      field = &features.f2;
-      used2 = true;
-    }
+    const std::vector<double>* field = points[i] == features.source1   ? &features.f1
+                                       : points[i] == features.source2 ? &features.f2
+                                                                       : nullptr;
     if (field == nullptr) {
       others.push_back(points[i]);
       other_index.push_back(static_cast<Index>(i));

@@ -53,8 +53,7 @@ std::vector<unsigned> without_fins(const std::vector<unsigned>& indices) {
   return out;
 }
 
-/// What a try simplifies: triangles on their own vertices, `vertex` (when
-/// not empty) the mesh's vertex that each is.
+/// Triangles on vertices of their own: `vertex` the mesh's vertex that each is.
 struct Coarser {
   std::vector<unsigned> indices;
   std::vector<float> positions;
@@ -111,17 +110,23 @@ MeshVariant decimate_mesh(const Mesh& mesh, const DecimationOptions& options) {
     // Steered by triangles (Euler: #F/#V stays about constant), corrected
     // from the vertex count each try gives.
     double triangles = static_cast<double>(mesh.num_triangles()) * options.vertex_ratio;
-    Coarser from{indices, positions, {}};
+    // What a try simplifies: the whole mesh, or (refine_last_try) the copy
+    // of the last try that kept too many vertices.
+    Coarser copy;
+    const std::vector<unsigned>* from = &indices;
+    const std::vector<float>* from_positions = &positions;
     for (int attempt = 0; attempt < 6; ++attempt) {
-      const double most = static_cast<double>(from.indices.size() / 3);  // meshoptimizer adds no triangle
-      kept = without_fins(simplify(from.indices, from.positions,
-                                   static_cast<std::size_t>(std::clamp(std::round(triangles), 1.0, most))));
-      if (!from.vertex.empty())
-        for (unsigned& v : kept) v = from.vertex[v];
+      const double most = static_cast<double>(from->size() / 3);  // meshoptimizer adds no triangle
+      kept = without_fins(
+          simplify(*from, *from_positions, static_cast<std::size_t>(std::clamp(std::round(triangles), 1.0, most))));
+      if (from == &copy.indices)
+        for (unsigned& v : kept) v = copy.vertex[v];
       const auto got = static_cast<double>(used_vertices(kept, nv));
       if (std::abs(got - static_cast<double>(target)) <= options.tolerance * static_cast<double>(target)) break;
       if (options.refine_last_try && got > static_cast<double>(target)) {
-        from = coarser(kept, positions);
+        copy = coarser(kept, positions);
+        from = &copy.indices;
+        from_positions = &copy.positions;
         triangles = static_cast<double>(kept.size() / 3);  // steered from the copy's own count
       }
       triangles *= static_cast<double>(target) / std::max(got, 1.0);
