@@ -149,6 +149,50 @@ TEST(CleanMesh, DuplicateFacesInEitherOrientationAreDropped) {
   EXPECT_NE(cleaned.report.warnings[0].find("3 duplicate triangles"), std::string::npos);
 }
 
+// Polygons of 0, 1 and 2 corners give no triangle; the pentagon after them
+// still gets its 3 (the triangles are written to storage sized by the
+// polygons' corners, which the short ones must not shrink).
+TEST(CleanMesh, PolygonsOfFewerThanThreeCornersAreDegenerate) {
+  const CleanedMesh cleaned = clean_mesh(
+      make_soup({{0, 0, 0}, {2, 0, 0}, {3, 1, 0}, {1, 2, 0}, {-1, 1, 0}}, {{}, {0}, {0, 1}, {0}, {}, {0, 1, 2, 3, 4}}));
+  EXPECT_EQ(cleaned.report.degenerate_faces_dropped, 5);
+  EXPECT_EQ(cleaned.report.triangles_created, 3);
+  ASSERT_EQ(cleaned.components[0].num_triangles(), 3);
+  expect_faces_up(cleaned.components[0]);
+}
+
+// A duplicate whose three edges no other triangle uses closes on its
+// original: no edge is non-manifold. Attached by a vertex it makes that
+// vertex non-manifold; alone it is a component; as the whole mesh it is two
+// triangles. Each is found and dropped.
+TEST(CleanMesh, DuplicatesClosingOnTheirOriginalAreDropped) {
+  const std::vector<std::array<double, 3>> points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0},
+                                                     {2, 0, 1}, {2, 1, 1}, {5, 5, 5}, {6, 5, 5}};
+  // A square, and a triangle with its reversed copy on its corner 1.
+  const CleanedMesh attached = clean_mesh(make_soup(points, {{0, 1, 2}, {1, 3, 2}, {1, 4, 5}, {1, 5, 4}}));
+  EXPECT_EQ(attached.report.duplicate_faces_dropped, 1);
+  ASSERT_EQ(attached.components[0].num_triangles(), 3);
+  EXPECT_EQ(attached.report.non_manifold_edges, 0);
+  EXPECT_EQ(attached.report.non_manifold_vertices, 1);  // vertex 1: the square's fan and the triangle
+  EXPECT_EQ(attached.report.boundary_edges, 7);         // after the copy went: the triangle's edges are open
+
+  // The square, and the triangle and its copy apart from it.
+  CleanupOptions keep_all;
+  keep_all.keep_all_components = true;
+  const CleanedMesh apart = clean_mesh(make_soup(points, {{0, 1, 2}, {1, 3, 2}, {4, 6, 7}, {7, 6, 4}}), keep_all);
+  EXPECT_EQ(apart.report.duplicate_faces_dropped, 1);
+  EXPECT_EQ(apart.report.components, 2);
+  ASSERT_EQ(apart.components.size(), 2u);
+  EXPECT_EQ(apart.components[0].num_triangles(), 1);  // the triangle, larger than the square
+  EXPECT_EQ(apart.components[1].num_triangles(), 2);
+  EXPECT_EQ(apart.report.boundary_edges, 7);
+
+  const CleanedMesh alone = clean_mesh(make_soup(points, {{0, 1, 2}, {2, 1, 0}}));
+  EXPECT_EQ(alone.report.duplicate_faces_dropped, 1);
+  ASSERT_EQ(alone.components[0].num_triangles(), 1);
+  EXPECT_EQ(alone.report.boundary_edges, 3);
+}
+
 // A disk triangulated as a fan around its centre: every triangle shares the
 // smallest vertex, so the duplicates are found in one large bucket.
 TEST(CleanMesh, DuplicatesInALargeFanAreDroppedAndTheFirstKept) {

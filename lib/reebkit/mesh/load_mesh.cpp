@@ -2,13 +2,15 @@
 
 #include "reebkit/io/mesh_io.h"
 
+#include <utility>
+
 namespace reebkit {
 
 namespace {
 
 CleanedMesh cleaned(PolygonSoup soup, const std::filesystem::path& path, const CleanupOptions& options) {
   if (soup.source.empty()) soup.source = path.string();  // so that cleanup errors name the file
-  return clean_mesh(soup, options);
+  return clean_mesh(std::move(soup), options);
 }
 
 }  // namespace

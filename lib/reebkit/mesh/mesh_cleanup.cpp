@@ -78,16 +78,39 @@ Index merge_coincident(const Points& vertices, std::vector<Index>& representativ
   return merged;
 }
 
+/// Triangles added row by row to storage sized once for the most a soup can
+/// give (n - 2 per polygon of n corners), so that the mesh takes them without
+/// a copy.
+class TriangleRows {
+ public:
+  explicit TriangleRows(Index capacity) : rows_(capacity, 3) {}
+  void add(Index a, Index b, Index c) {
+    Index* row = rows_.data() + 3 * static_cast<std::size_t>(size_++);
+    row[0] = a;
+    row[1] = b;
+    row[2] = c;
+  }
+  /// The rows added; the storage shrinks to them.
+  Triangles take() {
+    rows_.conservativeResize(size_, 3);
+    return std::move(rows_);
+  }
+
+ private:
+  Triangles rows_;
+  Index size_ = 0;
+};
+
 /// Ear clipping of one polygon in the plane of its Newell normal. Scratch
 /// buffers are members so that a soup of many polygons allocates once.
 class PolygonTriangulator {
  public:
   /// Appends the n - 2 triangles of `polygon` (n >= 3 distinct vertices) to
   /// `out`, each in the polygon's orientation.
-  void triangulate(const std::vector<Index>& polygon, const Points& points, std::vector<Index>& out) {
+  void triangulate(const std::vector<Index>& polygon, const Points& points, TriangleRows& out) {
     const auto n = static_cast<Index>(polygon.size());
     if (n == 3 || !project(polygon, points) || is_strictly_convex()) {
-      for (Index i = 1; i + 1 < n; ++i) out.insert(out.end(), {polygon[0], polygon[i], polygon[i + 1]});
+      for (Index i = 1; i + 1 < n; ++i) out.add(polygon[0], polygon[i], polygon[i + 1]);
       return;
     }
     next_.resize(polygon.size());
@@ -101,7 +124,7 @@ class PolygonTriangulator {
     for (Index remaining = n; remaining > 3;) {
       // No ear in a whole round (a self-overlapping projection): clip anyway.
       if (is_ear(corner) || misses > remaining) {
-        out.insert(out.end(), {polygon[prev_[corner]], polygon[corner], polygon[next_[corner]]});
+        out.add(polygon[prev_[corner]], polygon[corner], polygon[next_[corner]]);
         next_[prev_[corner]] = next_[corner];
         prev_[next_[corner]] = prev_[corner];
         corner = next_[corner];
@@ -112,7 +135,7 @@ class PolygonTriangulator {
         ++misses;
       }
     }
-    out.insert(out.end(), {polygon[prev_[corner]], polygon[corner], polygon[next_[corner]]});
+    out.add(polygon[prev_[corner]], polygon[corner], polygon[next_[corner]]);
   }
 
  private:
@@ -162,14 +185,13 @@ class PolygonTriangulator {
   std::vector<Index> prev_;
 };
 
-/// Triangles of the soup after welding, collapsing and degenerate removal, as
-/// a flat list of vertex triples in file order.
-std::vector<Index> triangulate_soup(const PolygonSoup& soup, const std::vector<Index>& representative,
-                                    CleanupReport& report) {
-  const std::size_t corners = soup.face_vertex.size();
-  const std::size_t two_per_polygon = 2 * static_cast<std::size_t>(soup.num_polygons());
-  std::vector<Index> triangles;
-  triangles.reserve(3 * (corners > two_per_polygon ? corners - two_per_polygon : 0));  // n - 2 per polygon
+/// Triangles of the soup after welding, collapsing and degenerate removal, in
+/// file order.
+Triangles triangulate_soup(const PolygonSoup& soup, const std::vector<Index>& representative, CleanupReport& report) {
+  Index most = 0;  // n - 2 per polygon of n >= 3 corners
+  for (Index p = 0; p < soup.num_polygons(); ++p)
+    most += std::max<Index>(soup.face_offset[p + 1] - soup.face_offset[p] - 2, 0);
+  TriangleRows triangles(most);
   std::vector<Index> polygon;
   std::vector<Index> sorted;
   PolygonTriangulator triangulator;
@@ -181,7 +203,7 @@ std::vector<Index> triangulate_soup(const PolygonSoup& soup, const std::vector<I
       if (a == b || b == c || a == c) {
         ++report.degenerate_faces_dropped;
       } else {
-        triangles.insert(triangles.end(), {a, b, c});
+        triangles.add(a, b, c);
       }
       continue;
     }
@@ -203,7 +225,7 @@ std::vector<Index> triangulate_soup(const PolygonSoup& soup, const std::vector<I
     }
     triangulator.triangulate(polygon, soup.vertices, triangles);
   }
-  return triangles;
+  return triangles.take();
 }
 
 /// Removes every triangle whose vertex set equals that of an earlier one.
@@ -212,24 +234,28 @@ std::vector<Index> triangulate_soup(const PolygonSoup& soup, const std::vector<I
 /// is compared with the earlier ones of its bucket only: a handful on a
 /// manifold mesh (the triangles around one vertex), so linear time; a large
 /// bucket is sorted instead.
-Index drop_duplicate_triangles(std::vector<Index>& triangles, Index num_vertices) {
-  const std::size_t count = triangles.size() / 3;
-  std::vector<std::array<Index, 3>> sorted(count);
-  std::vector<Index> start(static_cast<std::size_t>(num_vertices) + 1, 0);
-  for (std::size_t t = 0; t < count; ++t) {
-    Index a = triangles[3 * t], b = triangles[3 * t + 1], c = triangles[3 * t + 2];
-    if (a > b) std::swap(a, b);  // a sorting network of three
+Index drop_duplicate_triangles(Triangles& triangles, Index num_vertices) {
+  const auto count = static_cast<std::size_t>(triangles.rows());
+  const Index* const corner = triangles.data();
+  // Triangle t's vertices in increasing order (a sorting network of three),
+  // computed where compared rather than stored: a copy of every triangle
+  // costs more than the few comparisons a bucket needs.
+  const auto triple = [&](Index t) {
+    const Index* v = corner + 3 * static_cast<std::size_t>(t);
+    Index a = v[0], b = v[1], c = v[2];
+    if (a > b) std::swap(a, b);
     if (b > c) std::swap(b, c);
     if (a > b) std::swap(a, b);
-    sorted[t] = {a, b, c};
-    ++start[static_cast<std::size_t>(a) + 1];
-  }
+    return std::array<Index, 3>{a, b, c};
+  };
+  const auto smallest = [&](std::size_t t) { return std::min({corner[3 * t], corner[3 * t + 1], corner[3 * t + 2]}); };
+  std::vector<Index> start(static_cast<std::size_t>(num_vertices) + 1, 0);
+  for (std::size_t t = 0; t < count; ++t) ++start[static_cast<std::size_t>(smallest(t)) + 1];
   for (std::size_t v = 0; v < static_cast<std::size_t>(num_vertices); ++v) start[v + 1] += start[v];
   std::vector<Index> bucket(count), fill(start.begin(), start.end() - 1);
   for (std::size_t t = 0; t < count; ++t)
-    bucket[static_cast<std::size_t>(fill[static_cast<std::size_t>(sorted[t][0])]++)] = static_cast<Index>(t);
+    bucket[static_cast<std::size_t>(fill[static_cast<std::size_t>(smallest(t))]++)] = static_cast<Index>(t);
   std::vector<std::uint8_t> duplicate(count, 0);
-  const auto triple = [&](Index t) { return sorted[static_cast<std::size_t>(t)]; };
   for (std::size_t v = 0; v < static_cast<std::size_t>(num_vertices); ++v) {
     const auto first = bucket.begin() + start[v], last = bucket.begin() + start[v + 1];
     if (last - first > 16) {  // a large fan (a disk triangulated around its centre): sorted, not pairwise
@@ -243,23 +269,20 @@ Index drop_duplicate_triangles(std::vector<Index>& triangles, Index num_vertices
       for (auto earlier = first; earlier < it && !duplicate[static_cast<std::size_t>(*it)]; ++earlier)
         duplicate[static_cast<std::size_t>(*it)] = triple(*earlier) == triple(*it);
   }
-  std::size_t kept = 0;
-  for (std::size_t t = 0; t < count; ++t) {
-    if (duplicate[t]) continue;
-    std::copy_n(triangles.begin() + static_cast<std::ptrdiff_t>(3 * t), 3,
-                triangles.begin() + static_cast<std::ptrdiff_t>(3 * kept));
-    ++kept;
-  }
-  triangles.resize(3 * kept);
-  return static_cast<Index>(count - kept);
+  Index kept = 0;
+  for (std::size_t t = 0; t < count; ++t)
+    if (!duplicate[t]) triangles.row(kept++) = triangles.row(static_cast<Index>(t));
+  triangles.conservativeResize(kept, 3);
+  return static_cast<Index>(count) - kept;
 }
 
 /// The mesh on the referenced soup vertices (in soup order) of `triangles`.
 /// When every vertex is referenced (the usual case) the numbering is the
-/// soup's, and vertices and triangles are copied whole.
-Mesh compact_mesh(const PolygonSoup& soup, const std::vector<Index>& triangles) {
+/// soup's, and the vertices are taken whole: from `owned_vertices`, the
+/// soup's own array, where the caller gave the soup away, or copied.
+Mesh compact_mesh(const PolygonSoup& soup, Points* owned_vertices, Triangles triangles) {
   std::vector<Index> new_index(static_cast<std::size_t>(soup.num_vertices()), kInvalidIndex);
-  for (const Index v : triangles) new_index[v] = 0;
+  for (const Index v : triangles.reshaped()) new_index[v] = 0;
   Mesh mesh;
   mesh.source = soup.source;
   mesh.source_vertex.reserve(new_index.size());
@@ -268,9 +291,9 @@ Mesh compact_mesh(const PolygonSoup& soup, const std::vector<Index>& triangles) 
     new_index[v] = static_cast<Index>(mesh.source_vertex.size());
     mesh.source_vertex.push_back(v);
   }
-  mesh.triangles = Eigen::Map<const Triangles>(triangles.data(), static_cast<Eigen::Index>(triangles.size() / 3), 3);
+  mesh.triangles = std::move(triangles);
   if (mesh.source_vertex.size() == new_index.size()) {
-    mesh.vertices = soup.vertices;
+    mesh.vertices = owned_vertices != nullptr ? std::move(*owned_vertices) : soup.vertices;
     return mesh;
   }
   mesh.vertices.resize(static_cast<Eigen::Index>(mesh.source_vertex.size()), 3);
@@ -317,9 +340,9 @@ std::vector<Mesh> split_components(const Mesh& mesh, const ComponentLabels& labe
   return parts;
 }
 
-}  // namespace
-
-CleanedMesh clean_mesh(const PolygonSoup& soup, const CleanupOptions& options) {
+/// clean_mesh, taking the vertex array from `owned_vertices` (the soup's own,
+/// or nullptr to copy it).
+CleanedMesh clean(const PolygonSoup& soup, Points* owned_vertices, const CleanupOptions& options) {
   check_soup(soup);
   CleanedMesh result;
   CleanupReport& report = result.report;
@@ -332,8 +355,8 @@ CleanedMesh clean_mesh(const PolygonSoup& soup, const CleanupOptions& options) {
   if (options.merge_coincident_vertices)
     report.coincident_vertices_merged = merge_coincident(soup.vertices, representative);
 
-  std::vector<Index> triangles = triangulate_soup(soup, representative, report);
-  if (triangles.empty())
+  Triangles triangles = triangulate_soup(soup, representative, report);
+  if (triangles.rows() == 0)
     throw InvalidMeshError(soup.source, "no usable triangle: all " +
                                             count_of(soup.num_polygons(), "polygon is", "polygons are") +
                                             " degenerate (fewer than 3 distinct vertices, or a repeated vertex)");
@@ -341,23 +364,35 @@ CleanedMesh clean_mesh(const PolygonSoup& soup, const CleanupOptions& options) {
     report.warnings.push_back(where + "dropped " +
                               count_of(report.degenerate_faces_dropped, "degenerate polygon", "degenerate polygons") +
                               " (fewer than 3 distinct vertices, or a repeated vertex)");
-  report.duplicate_faces_dropped = drop_duplicate_triangles(triangles, soup.num_vertices());
-  if (report.duplicate_faces_dropped > 0)
-    report.warnings.push_back(where + "dropped " +
-                              count_of(report.duplicate_faces_dropped, "duplicate triangle", "duplicate triangles") +
-                              " (same vertices as an earlier triangle)");
-
-  Mesh mesh = compact_mesh(soup, triangles);
-  double surface_area = 0.0;
-  for (Index t = 0; t < mesh.num_triangles(); ++t) surface_area += triangle_area(mesh, t);
-  if (!(surface_area > 0.0))
+  Mesh mesh = compact_mesh(soup, owned_vertices, std::move(triangles));
+  // The areas are >= 0, so the surface has area as soon as one triangle has: on a
+  // usual mesh the first.
+  bool has_area = false;
+  for (Index t = 0; t < mesh.num_triangles() && !has_area; ++t) has_area = triangle_area(mesh, t) > 0.0;
+  if (!has_area)
     throw InvalidMeshError(soup.source, "no surface: the vertices of every one of its " +
                                             count_of(mesh.num_triangles(), "triangle are", "triangles are") +
                                             " collinear (zero area, degenerate)");
   report.unreferenced_vertices_dropped =
       report.input_vertices - report.coincident_vertices_merged - mesh.num_vertices();
 
-  const MeshTopology topology = analyze_topology(mesh);
+  MeshTopology topology = analyze_topology(mesh);
+  // Two triangles on the same three vertices share their three edges: an edge
+  // of theirs has more than two triangles, or the two close on each other, a
+  // fan of their own at each of their vertices; a vertex that other triangles
+  // share then has two fans, and one that none share makes the two a
+  // component (the whole mesh when it has two triangles). Only such a mesh is
+  // searched for duplicates, and its topology taken again without them (they
+  // leave no vertex unreferenced: the first of each stays).
+  if (!topology.manifold || topology.components > 1 || mesh.num_triangles() == 2) {
+    report.duplicate_faces_dropped = drop_duplicate_triangles(mesh.triangles, mesh.num_vertices());
+    if (report.duplicate_faces_dropped > 0) {
+      report.warnings.push_back(where + "dropped " +
+                                count_of(report.duplicate_faces_dropped, "duplicate triangle", "duplicate triangles") +
+                                " (same vertices as an earlier triangle)");
+      topology = analyze_topology(mesh);
+    }
+  }
   report.boundary_edges = topology.boundary_edges;
   report.boundary_loops = topology.boundary_loops;
   report.non_manifold_edges = topology.non_manifold_edges;
@@ -406,6 +441,14 @@ CleanedMesh clean_mesh(const PolygonSoup& soup, const CleanupOptions& options) {
   }
   result.components = split_components(mesh, labels, order);
   return result;
+}
+
+}  // namespace
+
+CleanedMesh clean_mesh(const PolygonSoup& soup, const CleanupOptions& options) { return clean(soup, nullptr, options); }
+
+CleanedMesh clean_mesh(PolygonSoup&& soup, const CleanupOptions& options) {
+  return clean(soup, &soup.vertices, options);
 }
 
 }  // namespace reebkit

@@ -70,4 +70,8 @@ struct CleanedMesh {
 /// O((V + F) log(V + F)).
 CleanedMesh clean_mesh(const PolygonSoup& soup, const CleanupOptions& options = {});
 
+/// The same, taking the soup's vertex array into the mesh instead of copying
+/// it (load_mesh: the soup of a file read for this alone).
+CleanedMesh clean_mesh(PolygonSoup&& soup, const CleanupOptions& options = {});
+
 }  // namespace reebkit

@@ -166,6 +166,30 @@ class VertexStar {
   Index size_ = 0;
 };
 
+/// The two triangles of a manifold edge run along it the same way (the same
+/// start vertex): one of them must flip for the two to agree.
+bool same_direction(const Triangles& triangles, const VertexStar::Edge& edge) {
+  return corner_vertex(triangles, edge.halfedge[0]) == corner_vertex(triangles, edge.halfedge[1]);
+}
+
+/// Whether flipping some triangles orients every manifold edge once each way:
+/// a two-colouring of the triangles under the edges' constraints, by a second
+/// pass over the stars. Needed only where the triangles as given disagree on
+/// an edge, so a consistently oriented file (the usual case) never pays for it.
+bool orientable_by_flips(const Triangles& triangles, const VertexCorners& corners) {
+  OrientationSets orientation(static_cast<Index>(triangles.rows()));
+  const auto num_vertices = static_cast<Index>(corners.start.size()) - 1;
+  VertexStar star(num_vertices);
+  for (Index v = 0; v < num_vertices; ++v) {
+    star.collect(triangles, v, corners.corner.data() + corners.start[v], corners.degree(v));
+    for (const VertexStar::Edge& edge : star)
+      if (edge.other > v && edge.count == 2 &&
+          !orientation.relate(edge.halfedge[0] / 3, edge.halfedge[1] / 3, same_direction(triangles, edge)))
+        return false;
+  }
+  return true;
+}
+
 /// Closed chains of boundary edges, given each boundary edge by its one
 /// half-edge (`boundary_halfedges`, any order) and the pairs of boundary
 /// half-edges that continue each other at a vertex.
@@ -233,9 +257,8 @@ MeshTopology analyze_topology(const Mesh& mesh) {
   const VertexCorners corners = corners_by_vertex(triangles, num_vertices);
   VertexStar star(num_vertices);
   DisjointSets fans;  // over the corners of one vertex, by their position among them
-  OrientationSets orientation(topology.faces);
   DisjointSets components(num_vertices);
-  topology.orientable = true;
+  bool oriented_as_given = true;
   std::vector<Index> boundary_halfedges;
   std::vector<std::pair<Index, Index>> continuations;
   std::vector<Index> fan_boundary_halfedge;  // per corner position of the vertex: first boundary half-edge of its fan
@@ -255,12 +278,7 @@ MeshTopology analyze_topology(const Mesh& mesh) {
       ++topology.edges;
       if (edge.count == 1) boundary_halfedges.push_back(edge.halfedge[0]);
       if (edge.count > 2) ++topology.non_manifold_edges;
-      if (edge.count == 2 && topology.orientable) {
-        // Same start vertex = same direction: exactly one of the two must flip.
-        const bool same_direction =
-            corner_vertex(triangles, edge.halfedge[0]) == corner_vertex(triangles, edge.halfedge[1]);
-        topology.orientable = orientation.relate(edge.halfedge[0] / 3, edge.halfedge[1] / 3, same_direction);
-      }
+      if (edge.count == 2 && same_direction(triangles, edge)) oriented_as_given = false;
     }
     if (fan_count != 1) ++topology.non_manifold_vertices;
     if (!boundary) continue;
@@ -275,6 +293,7 @@ MeshTopology analyze_topology(const Mesh& mesh) {
       }
     }
   }
+  topology.orientable = oriented_as_given || orientable_by_flips(triangles, corners);
   topology.boundary_edges = static_cast<Index>(boundary_halfedges.size());
   topology.boundary_loops = count_boundary_loops(std::move(boundary_halfedges), continuations);
 
