@@ -27,34 +27,51 @@ struct Element {
 /// 21 entries per triangle, allocated and sorted for each operator.
 struct Pattern {
   std::vector<int> outer, inner;
-  /// The position of entry (row, col) in `inner`.
-  std::size_t at(Index row, Index col) const {
-    const auto first = inner.begin() + outer[static_cast<std::size_t>(col)],
-               last = inner.begin() + outer[static_cast<std::size_t>(col) + 1];
-    return static_cast<std::size_t>(std::lower_bound(first, last, static_cast<int>(row)) - inner.begin());
-  }
+  /// at[9 e + 3 r + c]: the position in `inner` of element e's entry (row
+  /// e.v[r], column e.v[c]), where its terms are summed.
+  std::vector<int> at;
 };
 
 Pattern edge_pattern(const std::vector<Element>& elements, Index n) {
   Pattern p;
-  // Each corner lists itself and the triangle's two other corners; the
-  // duplicates are dropped per column below.
+  // Each corner lists itself and the triangle's two other corners, with the
+  // element entry each stands for; the duplicates are merged per column below.
+  struct Candidate {
+    int row, entry;
+  };
   std::vector<int> count(static_cast<std::size_t>(n) + 1, 0);
   for (const Element& e : elements)
     for (const Index v : e.v) count[static_cast<std::size_t>(v) + 1] += 3;
   for (std::size_t c = 1; c < count.size(); ++c) count[c] += count[c - 1];
-  std::vector<int> rows(static_cast<std::size_t>(count.back()));
+  std::vector<Candidate> candidates(static_cast<std::size_t>(count.back()));
   std::vector<int> fill(count.begin(), count.end() - 1);
-  for (const Element& e : elements)
-    for (const Index col : e.v)
-      for (const Index row : e.v)
-        rows[static_cast<std::size_t>(fill[static_cast<std::size_t>(col)]++)] = static_cast<int>(row);
+  for (std::size_t e = 0; e < elements.size(); ++e)
+    for (int c = 0; c < 3; ++c)
+      for (int r = 0; r < 3; ++r) {
+        const auto col = static_cast<std::size_t>(elements[e].v[static_cast<std::size_t>(c)]);
+        candidates[static_cast<std::size_t>(fill[col]++)] = {static_cast<int>(
+                                                                 elements[e].v[static_cast<std::size_t>(r)]),
+                                                             static_cast<int>(9 * e) + 3 * r + c};
+      }
   p.outer.assign(static_cast<std::size_t>(n) + 1, 0);
-  p.inner.reserve(rows.size() / 2 + static_cast<std::size_t>(n));
+  p.inner.reserve(candidates.size() / 2 + static_cast<std::size_t>(n));
+  p.at.resize(9 * elements.size());
+  // Per column: its distinct rows (a vertex and its neighbours, a handful),
+  // sorted; then each candidate's entry gets the position of its row.
+  std::vector<int> seen_in(static_cast<std::size_t>(n), -1), position(static_cast<std::size_t>(n));
   for (std::size_t col = 0; col < static_cast<std::size_t>(n); ++col) {
-    const auto first = rows.begin() + count[col], last = rows.begin() + count[col + 1];
-    std::sort(first, last);
-    p.inner.insert(p.inner.end(), first, std::unique(first, last));
+    const auto first = candidates.begin() + count[col], last = candidates.begin() + count[col + 1];
+    const std::size_t begin = p.inner.size();
+    for (auto it = first; it != last; ++it)
+      if (seen_in[static_cast<std::size_t>(it->row)] != static_cast<int>(col)) {
+        seen_in[static_cast<std::size_t>(it->row)] = static_cast<int>(col);
+        p.inner.push_back(it->row);
+      }
+    std::sort(p.inner.begin() + static_cast<std::ptrdiff_t>(begin), p.inner.end());
+    for (std::size_t k = begin; k < p.inner.size(); ++k)
+      position[static_cast<std::size_t>(p.inner[k])] = static_cast<int>(k);
+    for (auto it = first; it != last; ++it)
+      p.at[static_cast<std::size_t>(it->entry)] = position[static_cast<std::size_t>(it->row)];
     p.outer[col + 1] = static_cast<int>(p.inner.size());
   }
   return p;
@@ -113,25 +130,25 @@ LaplaceBeltrami laplace_beltrami(const Mesh& mesh, const LaplaceBeltramiOptions&
   std::vector<double> stiffness(pattern.inner.size(), 0.0), mass;
   if (options.mass == MassMatrix::Consistent) mass.assign(pattern.inner.size(), 0.0);
   std::vector<double> lumped(options.mass == MassMatrix::Lumped ? static_cast<std::size_t>(n) : 0, 0.0);
-  for (const Element& e : elements) {
-    std::size_t at[3][3];  // the position of entry (row e.v[r], column e.v[c])
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c)
-        at[r][c] = pattern.at(e.v[static_cast<std::size_t>(r)], e.v[static_cast<std::size_t>(c)]);
+  for (std::size_t element = 0; element < elements.size(); ++element) {
+    const Element& e = elements[element];
+    const int* position = pattern.at.data() + 9 * element;
+    // The position of entry (row e.v[r], column e.v[c]).
+    const auto at = [position](int r, int c) { return static_cast<std::size_t>(position[3 * r + c]); };
     for (int k = 0; k < 3; ++k) {
       const int i = (k + 1) % 3, j = (k + 2) % 3;
       const double half_cot = e.half_cot[static_cast<std::size_t>(k)];
-      stiffness[at[i][j]] -= half_cot;
-      stiffness[at[j][i]] -= half_cot;
-      stiffness[at[i][i]] += half_cot;
-      stiffness[at[j][j]] += half_cot;
+      stiffness[at(i, j)] -= half_cot;
+      stiffness[at(j, i)] -= half_cot;
+      stiffness[at(i, i)] += half_cot;
+      stiffness[at(j, j)] += half_cot;
     }
     for (int a = 0; a < 3; ++a) {
       if (options.mass == MassMatrix::Lumped) {
         lumped[static_cast<std::size_t>(e.v[static_cast<std::size_t>(a)])] += e.area / 3;
         continue;
       }
-      for (int b = 0; b < 3; ++b) mass[at[b][a]] += e.area / (a == b ? 6 : 12);
+      for (int b = 0; b < 3; ++b) mass[at(b, a)] += e.area / (a == b ? 6 : 12);
     }
   }
   result.stiffness = matrix(pattern, stiffness);
