@@ -82,6 +82,12 @@ void write_entries(const std::filesystem::path& path, std::int64_t first, std::i
 void expect_entries(const std::filesystem::path& path, std::int64_t count) {
   const CollectionReader reader(path);
   ASSERT_EQ(reader.size(), count);
+  // Names and classes one at a time, each read alone (a query's results),
+  // before the columns are read whole below.
+  for (std::int64_t i = 0; i < count; i += 37) {
+    EXPECT_EQ(reader.name(i), make_entry(i).name);
+    EXPECT_EQ(reader.class_label(i), make_entry(i).class_label);
+  }
   ASSERT_EQ(reader.names().size(), static_cast<std::size_t>(count));
   ASSERT_EQ(reader.signatures().size(), static_cast<std::size_t>(count * kSignatureLength));
   for (std::int64_t i = 0; i < count; ++i) {
@@ -90,6 +96,8 @@ void expect_entries(const std::filesystem::path& path, std::int64_t count) {
     EXPECT_EQ(reader.names()[static_cast<std::size_t>(i)], e.name);
     EXPECT_EQ(reader.class_labels()[static_cast<std::size_t>(i)], e.class_label);
     EXPECT_EQ(reader.find(e.name), i);
+    EXPECT_EQ(reader.name(i), e.name);
+    EXPECT_EQ(reader.class_label(i), e.class_label);
   }
 }
 
@@ -122,6 +130,8 @@ TEST(CollectionFile, RoundTripFieldByField) {
   EXPECT_EQ(reader.provenance().created.back(), 'Z');
   EXPECT_THROW(reader.entry(700), InvalidArgument);
   EXPECT_THROW(reader.entry(-1), InvalidArgument);
+  EXPECT_THROW(reader.name(700), InvalidArgument);
+  EXPECT_THROW(reader.class_label(-1), InvalidArgument);
 }
 
 TEST(CollectionFile, EmptyCollection) {

@@ -151,8 +151,8 @@ std::vector<QueryResult> query_collection(const CollectionReader& collection, co
   for (const MatchableGraph& g : matchable) graphs.push_back(&g);
   std::vector<QueryResult> ranked = rank_candidates(make_matchable_graph(query), nearest, graphs, options);
   for (QueryResult& r : ranked) {
-    r.name = collection.names()[static_cast<std::size_t>(r.index)];
-    r.class_label = collection.class_labels()[static_cast<std::size_t>(r.index)];
+    r.name = collection.name(r.index);
+    r.class_label = collection.class_label(r.index);
   }
   return ranked;
 }

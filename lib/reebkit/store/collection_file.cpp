@@ -44,6 +44,7 @@
 #include <new>
 #include <optional>
 #include <stdexcept>
+#include <string_view>
 #include <thread>
 #include <type_traits>
 #include <unordered_map>
@@ -630,13 +631,12 @@ void flush_to_disk(const H5::H5File& file, const fs::path& path) {
   if (::fsync(vfd_descriptor(file)) != 0) fail(path, std::string("fsync failed: ") + std::strerror(errno));
 }
 
-/// The committed part of a collection file: per-mesh columns and offsets.
+/// The committed part of a collection file: its entry count (checked
+/// against the rows written) and provenance. The per-entry columns are read
+/// when asked (CollectionReader), so that opening a collection of a million
+/// entries to query it reads little.
 struct Snapshot {
   std::int64_t size = 0;
-  std::vector<std::string> names, class_labels;
-  std::vector<std::uint64_t> hashes;
-  /// The offsets (size + 1, checked) into each part an entry has rows of.
-  std::array<std::vector<std::int64_t>, kPartCount> offsets;
   Provenance provenance;
 };
 
@@ -671,16 +671,57 @@ int layout_version(const H5::H5File& file) {
   return version;
 }
 
-/// The strings of the text dataset `name` of the entries of `s`.
-std::vector<std::string> read_strings(const Tables& t, const Snapshot& s, const char* name) {
-  const std::size_t d = dataset_index(name);
-  const std::vector<std::int64_t>& ends = s.offsets[datasets()[d].part];
-  const auto text = t.table[d].read_vector<char>(0, static_cast<hsize_t>(ends.back()));
-  std::vector<std::string> out;
-  out.reserve(ends.size() - 1);
-  for (std::size_t k = 0; k + 1 < ends.size(); ++k) out.emplace_back(text.data() + ends[k], text.data() + ends[k + 1]);
-  return out;
+/// The offsets (size + 1 of them, checked) of the entries of `s` into
+/// `part`, read whole.
+std::vector<std::int64_t> entry_offsets(const Tables& t, const Snapshot& s, Part part) {
+  for (std::size_t d = 0; d < t.table.size(); ++d) {
+    const Dataset& spec = datasets()[d];
+    if (spec.part != kEntry || spec.indexes != part) continue;
+    std::vector<std::int64_t> offsets = t.table[d].read_vector<std::int64_t>(0, static_cast<hsize_t>(s.size) + 1);
+    check_offsets(offsets, t.rows_of(part), spec.name);
+    return offsets;
+  }
+  throw H5::DataSetIException("read", "no offsets into a part");  // not reached: every part has its offsets
 }
+
+/// Entry i's text in the text dataset `name` (`name`, `class`), read alone:
+/// its two offsets, then its bytes.
+std::string read_text(const Tables& t, const char* name, std::int64_t i) {
+  const std::size_t d = dataset_index(name);
+  const Part part = datasets()[d].part;
+  for (std::size_t o = 0; o < t.table.size(); ++o) {
+    const Dataset& spec = datasets()[o];
+    if (spec.part != kEntry || spec.indexes != part) continue;
+    const auto ends = t.table[o].read_vector<std::int64_t>(static_cast<hsize_t>(i), 2);
+    check_offsets(ends, t.rows_of(part), spec.name);
+    const auto text =
+        t.table[d].read_vector<char>(static_cast<hsize_t>(ends[0]), static_cast<hsize_t>(ends[1] - ends[0]));
+    return {text.begin(), text.end()};
+  }
+  throw H5::DataSetIException("read", "no offsets into a part");  // not reached: every part has its offsets
+}
+
+/// A text dataset of the entries (`name`, `class`): its bytes and each
+/// entry's end in them, read whole.
+struct TextColumn {
+  std::vector<std::int64_t> ends;  ///< size + 1, checked
+  std::vector<char> text;
+
+  TextColumn(const Tables& t, const Snapshot& s, const char* name) {
+    const std::size_t d = dataset_index(name);
+    ends = entry_offsets(t, s, datasets()[d].part);
+    text = t.table[d].read_vector<char>(0, static_cast<hsize_t>(ends.back()));
+  }
+  std::string_view at(std::size_t k) const {
+    return {text.data() + ends[k], static_cast<std::size_t>(ends[k + 1] - ends[k])};
+  }
+  std::vector<std::string> strings() const {
+    std::vector<std::string> out;
+    out.reserve(ends.size() - 1);
+    for (std::size_t k = 0; k + 1 < ends.size(); ++k) out.emplace_back(at(k));
+    return out;
+  }
+};
 
 Snapshot read_snapshot(const H5::H5File& file, const Tables& t) {
   Snapshot s;
@@ -688,17 +729,9 @@ Snapshot read_snapshot(const H5::H5File& file, const Tables& t) {
   const auto g = static_cast<hsize_t>(s.size);  // checked below before it sizes anything
   for (std::size_t d = 0; d < t.table.size(); ++d) {
     const Dataset& spec = datasets()[d];
-    if (spec.part != kEntry) continue;
-    if (s.size < 0 || t.table[d].rows < g + (spec.is_offsets() ? 1 : 0))
+    if (spec.part == kEntry && (s.size < 0 || t.table[d].rows < g + (spec.is_offsets() ? 1 : 0)))
       throw H5::DataSetIException("read", "count (" + std::to_string(s.size) + ") exceeds the rows written");
-    if (spec.is_offsets()) {
-      s.offsets[spec.indexes] = t.table[d].read_vector<std::int64_t>(0, g + 1);
-      check_offsets(s.offsets[spec.indexes], t.rows_of(spec.indexes), spec.name);
-    }
   }
-  s.names = read_strings(t, s, "name");
-  s.class_labels = read_strings(t, s, "class");
-  s.hashes = t.named("content_hash").read_vector<std::uint64_t>(0, g);
   s.provenance.reebkit_version = read_string_attribute(file, "reebkit_version");
   s.provenance.options = read_string_attribute(file, "options");
   s.provenance.command = read_string_attribute(file, "command");
@@ -731,7 +764,7 @@ OpenCollection open_collection(const fs::path& path) {
 }
 
 /// Entries [first, first + n) read with one call per dataset.
-std::vector<GraphRecord> read_entries(const Tables& t, const Snapshot& s, std::int64_t first, std::int64_t n) {
+std::vector<GraphRecord> read_entries(const Tables& t, std::int64_t first, std::int64_t n) {
   const std::vector<Dataset>& specs = datasets();
   std::vector<GraphRecord> out(static_cast<std::size_t>(n));
   // Entry k's rows of part p: [bounds[p][k], bounds[p][k + 1]).
@@ -742,14 +775,9 @@ std::vector<GraphRecord> read_entries(const Tables& t, const Snapshot& s, std::i
     if (!spec.is_offsets()) continue;
     const std::vector<std::int64_t>& rows = bounds[spec.part];
     const std::int64_t row0 = rows.front();
-    std::vector<std::int64_t> offset;
-    if (spec.part == kEntry) {
-      offset.assign(s.offsets[spec.indexes].begin() + first, s.offsets[spec.indexes].begin() + first + n + 1);
-    } else {
-      offset = t.table[d].read_vector<std::int64_t>(static_cast<hsize_t>(row0),
-                                                    static_cast<hsize_t>(rows.back() - row0 + 1));
-      check_offsets(offset, t.rows_of(spec.indexes), spec.name);
-    }
+    const std::vector<std::int64_t> offset =
+        t.table[d].read_vector<std::int64_t>(static_cast<hsize_t>(row0), static_cast<hsize_t>(rows.back() - row0 + 1));
+    check_offsets(offset, t.rows_of(spec.indexes), spec.name);
     for (const std::int64_t r : rows) bounds[spec.indexes].push_back(offset[static_cast<std::size_t>(r - row0)]);
     if (spec.local == nullptr) continue;
     for (std::size_t k = 0; k < out.size(); ++k) {
@@ -783,6 +811,12 @@ void print_hdf5_error_stacks(bool on) { print_error_stacks = on; }
 
 struct CollectionReader::Impl : OpenCollection {
   fs::path path;
+  // The per-entry columns, each read on first use: a query with the query
+  // file reads the names (to find the query by its name) and a few
+  // classes, not the rest.
+  mutable std::optional<TextColumn> name_text, class_text;
+  mutable std::optional<std::vector<std::string>> names, class_labels;
+  mutable std::optional<std::vector<std::uint64_t>> hashes;
   /// The entries by name, built on the second find(): the first scans the
   /// names (a query by name need not hash every name of a large collection).
   mutable std::unordered_map<std::string, std::int64_t> by_name;
@@ -790,6 +824,24 @@ struct CollectionReader::Impl : OpenCollection {
   /// The signature matrix, read on the first signatures() (a query with a
   /// query file never reads it).
   mutable std::optional<std::vector<double>> signatures;
+
+  /// `column`, read on first use, as `doing` says.
+  template <typename T, typename Read>
+  const T& lazy(std::optional<T>& column, const char* doing, Read&& read) const {
+    if (!column) column = guarded(path, doing, read);
+    return *column;
+  }
+  const TextColumn& text(std::optional<TextColumn>& column, const char* name) const {
+    return lazy(column, "reading the entries' text", [&] { return TextColumn(tables, snapshot, name); });
+  }
+  /// Entry i's text, from `column` when it was read, else read alone.
+  std::string text_of(const std::optional<TextColumn>& column, const char* name, std::int64_t i) const {
+    if (i < 0 || i >= snapshot.size)
+      throw InvalidArgument(path.string() + ": entry " + std::to_string(i) + " out of range (the file holds " +
+                            std::to_string(snapshot.size) + ")");
+    if (column) return std::string(column->at(static_cast<std::size_t>(i)));
+    return guarded(path, "reading the entries' text", [&] { return read_text(tables, name, i); });
+  }
 };
 
 CollectionReader::CollectionReader(const fs::path& path) : impl_(std::make_unique<Impl>()) {
@@ -802,9 +854,23 @@ CollectionReader::~CollectionReader() = default;
 CollectionReader::CollectionReader(CollectionReader&&) noexcept = default;
 
 std::int64_t CollectionReader::size() const { return impl_->snapshot.size; }
-const std::vector<std::string>& CollectionReader::names() const { return impl_->snapshot.names; }
-const std::vector<std::string>& CollectionReader::class_labels() const { return impl_->snapshot.class_labels; }
-const std::vector<std::uint64_t>& CollectionReader::content_hashes() const { return impl_->snapshot.hashes; }
+const std::vector<std::string>& CollectionReader::names() const {
+  return impl_->lazy(impl_->names, "reading the names",
+                     [&] { return impl_->text(impl_->name_text, "name").strings(); });
+}
+const std::vector<std::string>& CollectionReader::class_labels() const {
+  return impl_->lazy(impl_->class_labels, "reading the classes",
+                     [&] { return impl_->text(impl_->class_text, "class").strings(); });
+}
+std::string CollectionReader::name(std::int64_t i) const { return impl_->text_of(impl_->name_text, "name", i); }
+std::string CollectionReader::class_label(std::int64_t i) const {
+  return impl_->text_of(impl_->class_text, "class", i);
+}
+const std::vector<std::uint64_t>& CollectionReader::content_hashes() const {
+  return impl_->lazy(impl_->hashes, "reading the content hashes", [&] {
+    return impl_->tables.named("content_hash").read_vector<std::uint64_t>(0, static_cast<hsize_t>(size()));
+  });
+}
 const std::vector<double>& CollectionReader::signatures() const {
   if (!impl_->signatures)
     impl_->signatures = guarded(impl_->path, "reading the signatures", [&] {
@@ -815,15 +881,16 @@ const std::vector<double>& CollectionReader::signatures() const {
 const Provenance& CollectionReader::provenance() const { return impl_->snapshot.provenance; }
 
 std::optional<std::int64_t> CollectionReader::find(const std::string& name) const {
-  const std::vector<std::string>& names = impl_->snapshot.names;
+  const TextColumn& names = impl_->text(impl_->name_text, "name");
+  const auto count = static_cast<std::size_t>(size());
   if (!impl_->found_once) {
     impl_->found_once = true;
-    const auto at = std::find(names.begin(), names.end(), name);
-    if (at == names.end()) return std::nullopt;
-    return at - names.begin();
+    for (std::size_t i = 0; i < count; ++i)
+      if (names.at(i) == name) return static_cast<std::int64_t>(i);
+    return std::nullopt;
   }
   if (impl_->by_name.empty())
-    for (std::size_t i = 0; i < names.size(); ++i) impl_->by_name.emplace(names[i], static_cast<std::int64_t>(i));
+    for (std::size_t i = 0; i < count; ++i) impl_->by_name.emplace(names.at(i), static_cast<std::int64_t>(i));
   const auto it = impl_->by_name.find(name);
   if (it == impl_->by_name.end()) return std::nullopt;
   return it->second;
@@ -833,8 +900,7 @@ GraphRecord CollectionReader::entry(std::int64_t i) const {
   if (i < 0 || i >= size())
     throw InvalidArgument(impl_->path.string() + ": entry " + std::to_string(i) + " out of range (the file holds " +
                           std::to_string(size()) + ")");
-  return guarded(impl_->path, "reading an entry",
-                 [&] { return std::move(read_entries(impl_->tables, impl_->snapshot, i, 1).front()); });
+  return guarded(impl_->path, "reading an entry", [&] { return std::move(read_entries(impl_->tables, i, 1).front()); });
 }
 
 std::vector<GraphRecord> CollectionReader::entries(std::int64_t first, std::int64_t count) const {
@@ -843,8 +909,7 @@ std::vector<GraphRecord> CollectionReader::entries(std::int64_t first, std::int6
                           std::to_string(first + count - 1) + " out of range (the file holds " +
                           std::to_string(size()) + ")");
   if (count == 0) return {};
-  return guarded(impl_->path, "reading entries",
-                 [&] { return read_entries(impl_->tables, impl_->snapshot, first, count); });
+  return guarded(impl_->path, "reading entries", [&] { return read_entries(impl_->tables, first, count); });
 }
 
 // ---------------------------------------------------------------------------
@@ -1024,7 +1089,7 @@ CollectionWriter::CollectionWriter(const fs::path& path, const Provenance& prove
         const std::int64_t n = old.snapshot.size;
         for (std::int64_t first = 0; first < n; first += static_cast<std::int64_t>(kBatchEntries)) {
           const std::int64_t count = std::min<std::int64_t>(static_cast<std::int64_t>(kBatchEntries), n - first);
-          auto entries = guarded(path, "reading", [&] { return read_entries(old.tables, old.snapshot, first, count); });
+          auto entries = guarded(path, "reading", [&] { return read_entries(old.tables, first, count); });
           for (GraphRecord& e : entries) {
             w.existing.emplace_back(e.name, e.content_hash);
             append(std::move(e));
@@ -1202,6 +1267,9 @@ void QueryFile::write(const CollectionReader& collection, const double* rows, co
   const fs::path path = path_of(c.path);
   fs::path temporary = path;
   temporary += ".partial";
+  std::array<std::vector<std::int64_t>, kPartCount> offsets;
+  for (const Part part : {kNode, kEdge})
+    offsets[part] = guarded(c.path, "reading", [&] { return entry_offsets(c.tables, c.snapshot, part); });
   const Dataset& signature_spec = datasets()[dataset_index("signature")];
   const auto write_file = [&] {
     H5::H5File file(temporary.string(), H5F_ACC_TRUNC);
@@ -1217,24 +1285,24 @@ void QueryFile::write(const CollectionReader& collection, const double* rows, co
     write_rows(create_contiguous(file, "index", bytes_spec, saved_index.size()), saved_index.data(), 0,
                saved_index.size());
     for (const Part part : {kNode, kEdge}) {
-      const std::vector<std::int64_t>& offset = c.snapshot.offsets[part];
+      const std::vector<std::int64_t>& offset = offsets[part];
       const Dataset spec = make_dataset(query_offsets_name(part), type_of<std::int64_t>(), kEntry);
       write_rows(create_contiguous(file, spec.name, spec, offset.size()), offset.data(), 0, offset.size());
     }
     std::vector<Table> graph;
     for (const char* name : kQueryGraphDatasets) {
       const Dataset& spec = datasets()[dataset_index(name)];
-      graph.push_back(create_contiguous(file, name, spec, static_cast<hsize_t>(c.snapshot.offsets[spec.part].back())));
+      graph.push_back(create_contiguous(file, name, spec, static_cast<hsize_t>(offsets[spec.part].back())));
       if (!spec.columns.empty()) write_text_attribute(graph.back().dataset, "columns", spec.columns, false);
     }
     for (std::int64_t first = 0; first < c.snapshot.size; first += kQueryWriteBatch) {
       const std::int64_t n = std::min(kQueryWriteBatch, c.snapshot.size - first);
-      const std::vector<GraphRecord> entries = read_entries(c.tables, c.snapshot, first, n);
+      const std::vector<GraphRecord> entries = read_entries(c.tables, first, n);
       for (std::size_t d = 0; d < kQueryGraphDatasets.size(); ++d) {
         const Dataset& spec = datasets()[dataset_index(kQueryGraphDatasets[d])];
         std::vector<char> data;
         for (const GraphRecord& e : entries) spec.put(e, data);
-        const auto row0 = static_cast<hsize_t>(c.snapshot.offsets[spec.part][static_cast<std::size_t>(first)]);
+        const auto row0 = static_cast<hsize_t>(offsets[spec.part][static_cast<std::size_t>(first)]);
         write_rows(graph[d], data.data(), row0, data.size() / graph[d].row_bytes());
       }
     }

@@ -108,8 +108,14 @@ class CollectionReader {
   CollectionReader(CollectionReader&&) noexcept;
 
   std::int64_t size() const;
+  // The per-entry columns are read on first use (the first of them may
+  // throw Error naming the file, as the constructor would).
   const std::vector<std::string>& names() const;
   const std::vector<std::string>& class_labels() const;
+  /// Entry i's name and class, without reading every entry's (throws
+  /// InvalidArgument for i out of range).
+  std::string name(std::int64_t i) const;
+  std::string class_label(std::int64_t i) const;
   /// The entries' content hashes (what resume compares).
   const std::vector<std::uint64_t>& content_hashes() const;
   /// size() x kSignatureLength, row-major.
