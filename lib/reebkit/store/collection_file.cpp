@@ -834,12 +834,17 @@ struct CollectionReader::Impl : OpenCollection {
   const TextColumn& text(std::optional<TextColumn>& column, const char* name) const {
     return lazy(column, "reading the entries' text", [&] { return TextColumn(tables, snapshot, name); });
   }
+  /// Texts read alone so far; past kTextsReadAlone a column is read whole
+  /// (a process that keeps querying: its later results are then look-ups).
+  mutable int texts_read_alone = 0;
+  static constexpr int kTextsReadAlone = 200;
   /// Entry i's text, from `column` when it was read, else read alone.
-  std::string text_of(const std::optional<TextColumn>& column, const char* name, std::int64_t i) const {
+  std::string text_of(std::optional<TextColumn>& column, const char* name, std::int64_t i) const {
     if (i < 0 || i >= snapshot.size)
       throw InvalidArgument(path.string() + ": entry " + std::to_string(i) + " out of range (the file holds " +
                             std::to_string(snapshot.size) + ")");
-    if (column) return std::string(column->at(static_cast<std::size_t>(i)));
+    if (column || ++texts_read_alone > kTextsReadAlone)
+      return std::string(text(column, name).at(static_cast<std::size_t>(i)));
     return guarded(path, "reading the entries' text", [&] { return read_text(tables, name, i); });
   }
 };
