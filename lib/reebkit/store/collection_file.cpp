@@ -671,34 +671,34 @@ int layout_version(const H5::H5File& file) {
   return version;
 }
 
-/// The offsets (size + 1 of them, checked) of the entries of `s` into
-/// `part`, read whole.
-std::vector<std::int64_t> entry_offsets(const Tables& t, const Snapshot& s, Part part) {
+/// The entries' offsets into `part`, rows [first, first + n) of their
+/// dataset, checked.
+std::vector<std::int64_t> read_entry_offsets(const Tables& t, Part part, std::int64_t first, std::int64_t n) {
   for (std::size_t d = 0; d < t.table.size(); ++d) {
     const Dataset& spec = datasets()[d];
     if (spec.part != kEntry || spec.indexes != part) continue;
-    std::vector<std::int64_t> offsets = t.table[d].read_vector<std::int64_t>(0, static_cast<hsize_t>(s.size) + 1);
+    std::vector<std::int64_t> offsets =
+        t.table[d].read_vector<std::int64_t>(static_cast<hsize_t>(first), static_cast<hsize_t>(n));
     check_offsets(offsets, t.rows_of(part), spec.name);
     return offsets;
   }
   throw H5::DataSetIException("read", "no offsets into a part");  // not reached: every part has its offsets
 }
 
+/// The offsets (size + 1 of them, checked) of the entries of `s` into
+/// `part`, read whole.
+std::vector<std::int64_t> entry_offsets(const Tables& t, const Snapshot& s, Part part) {
+  return read_entry_offsets(t, part, 0, s.size + 1);
+}
+
 /// Entry i's text in the text dataset `name` (`name`, `class`), read alone:
 /// its two offsets, then its bytes.
 std::string read_text(const Tables& t, const char* name, std::int64_t i) {
   const std::size_t d = dataset_index(name);
-  const Part part = datasets()[d].part;
-  for (std::size_t o = 0; o < t.table.size(); ++o) {
-    const Dataset& spec = datasets()[o];
-    if (spec.part != kEntry || spec.indexes != part) continue;
-    const auto ends = t.table[o].read_vector<std::int64_t>(static_cast<hsize_t>(i), 2);
-    check_offsets(ends, t.rows_of(part), spec.name);
-    const auto text =
-        t.table[d].read_vector<char>(static_cast<hsize_t>(ends[0]), static_cast<hsize_t>(ends[1] - ends[0]));
-    return {text.begin(), text.end()};
-  }
-  throw H5::DataSetIException("read", "no offsets into a part");  // not reached: every part has its offsets
+  const std::vector<std::int64_t> ends = read_entry_offsets(t, datasets()[d].part, i, 2);
+  const auto text =
+      t.table[d].read_vector<char>(static_cast<hsize_t>(ends[0]), static_cast<hsize_t>(ends[1] - ends[0]));
+  return {text.begin(), text.end()};
 }
 
 /// A text dataset of the entries (`name`, `class`): its bytes and each
