@@ -148,11 +148,16 @@ TEST(RegionSpectra, ALargeSurfaceDecimatedOnceFirstKeepsItsSpectra) {
     largest = std::max(largest, std::abs(staged.region[k] - direct.region[k]));
   EXPECT_GT(direct.region[0], 0.0);
   EXPECT_LT(largest, 0.01);
-  // A surface prepared for another mesh is refused.
+  // The whole surface's spectrum is the one prepared with the surface.
+  EXPECT_EQ(staged.global, surface.global);
+  // A surface prepared for another mesh, or not by spectra_surface, is refused.
   const Mesh other = make_icosphere(3);
   EXPECT_THROW(surface_spectra(other, surface, std::vector<Index>(static_cast<std::size_t>(other.num_vertices()), 0), 1,
                                options),
                InvalidArgument);
+  SpectraSurface without_spectrum = surface;
+  without_spectrum.global.clear();
+  EXPECT_THROW(surface_spectra(bunny, without_spectrum, label, 2, options), InvalidArgument);
 }
 
 // The whole surface's spectrum is computed on a copy of about

@@ -36,7 +36,7 @@ TEST(ReebFeaturesCli, GeodesicMethodIsAnOption) {
   ASSERT_EQ(graphed, 0) << graph_out;
   EXPECT_NE(graph_out.find("2 cycles"), std::string::npos) << graph_out;  // genus 2
   // Where the time goes: every step of the analysis, then the attributes.
-  EXPECT_NE(graph_out.find(" ms; the spectra's surface "), std::string::npos) << graph_out;
+  EXPECT_NE(graph_out.find(" ms; the spectra's surface and its spectrum "), std::string::npos) << graph_out;
   EXPECT_NE(graph_out.find("g.json (attributes and JSON "), std::string::npos) << graph_out;
 
   const auto [bad, bad_out] = run_command(reeb + " features " + shell_quoted(cow) + " --geodesic heat 2>&1");
@@ -76,7 +76,7 @@ TEST(ReebFeaturesCli, MinPersistenceIsAnOption) {
   ASSERT_EQ(graphed, 0) << graph_out;
   EXPECT_NE(graph_out.find("2 cycles"), std::string::npos) << graph_out;  // genus 2
   // Where the time goes: every step of the analysis, then the attributes.
-  EXPECT_NE(graph_out.find(" ms; the spectra's surface "), std::string::npos) << graph_out;
+  EXPECT_NE(graph_out.find(" ms; the spectra's surface and its spectrum "), std::string::npos) << graph_out;
   EXPECT_NE(graph_out.find("g.json (attributes and JSON "), std::string::npos) << graph_out;
 
   // reeb index records it with the collection's analysis options.

@@ -42,8 +42,9 @@ void print_summary(const std::vector<MeshAnalysis>& results) {
     std::cout << " " << count[static_cast<int>(type)] << " " << node_type_name(type);
   std::cout << "; " << leaves << " leaves, " << cycles << " cycles\n"
             << std::fixed << std::setprecision(2) << "time: graph " << time.graph << " ms, features " << time.features
-            << " ms, f_q " << time.quotient << " ms, Reeb graph " << time.reeb << " ms; the spectra's surface "
-            << time.spectra_surface << " ms (beside them where a second thread is free)\n"
+            << " ms, f_q " << time.quotient << " ms, Reeb graph " << time.reeb
+            << " ms; the spectra's surface and its spectrum " << time.spectra_surface
+            << " ms (beside them where a second thread is free)\n"
             << std::defaultfloat;
 }
 

@@ -108,6 +108,43 @@ MeshVariant decimated_or_whole(const Mesh& m, double ratio, double tolerance) {
   return whole;
 }
 
+/// The share of `surface`'s vertices its coarse copies keep to have about
+/// `vertices`: 1 (the surface itself) where the frame is ill-defined (its
+/// coarse copies would differ with the rounding: a quadric collapse's
+/// choice between collapses of nearly equal cost, as on the flat faces of a
+/// mechanical part, turns on a change of the last bit).
+double coarse_ratio(const Mesh& surface, double axis_gap, Index vertices, const SpectraOptions& options) {
+  return axis_gap < options.min_axis_gap
+             ? 1.0
+             : std::min(1.0, static_cast<double>(vertices) / static_cast<double>(surface.num_vertices()));
+}
+
+/// The coarse copy of a connected piece, decimated to `ratio` of its
+/// vertices; the piece itself where the decimation leaves a triangle it
+/// cannot repair, or cuts the piece in two: slower, not wrong.
+Mesh coarsened(const Mesh& piece, double ratio) { return decimated_or_whole(piece, ratio, 0.05).mesh; }
+
+/// SurfaceSpectra::global of `surface` (the spectra surface, of frame gap
+/// `axis_gap`).
+std::vector<double> global_spectrum(const Mesh& surface, double axis_gap, const SpectraOptions& options) {
+  const Mesh global_copy = coarsened(surface, coarse_ratio(surface, axis_gap, options.global_vertices, options));
+  std::vector<double> out(at(kGlobalSpectrumLength), 0.0);
+  ShapeDnaOptions global;
+  global.eigenvalues = kGlobalSpectrumLength;
+  global.margin = 4;
+  // The global copy; where the operator or the iterations cannot take it,
+  // the surface itself; where they cannot take that either (a handful of
+  // vertices), zeros, as for a region too small.
+  for (const Mesh* m : {&global_copy, &surface}) {
+    try {
+      squash(shape_dna(*m, global), kGlobalSpectrumLength, out.data());
+      break;
+    } catch (const InvalidMeshError&) {
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 SpectraSurface spectra_surface(const Mesh& mesh, const SpectraOptions& options) {
@@ -131,6 +168,7 @@ SpectraSurface spectra_surface(const Mesh& mesh, const SpectraOptions& options) 
     out.mesh = std::move(canonical.mesh);
     out.original_vertex = std::move(canonical.original_vertex);
   }
+  out.global = global_spectrum(out.mesh, out.axis_gap, options);
   return out;
 }
 
@@ -145,10 +183,10 @@ SurfaceSpectra surface_spectra(const Mesh& mesh, const SpectraSurface& prepared,
   if (vertex_region.size() != at(mesh.num_vertices()))
     throw InvalidArgument("surface_spectra: " + where + ": " + std::to_string(vertex_region.size()) +
                           " region labels for " + std::to_string(mesh.num_vertices()) + " vertices");
-  if (prepared.input_vertices != mesh.num_vertices())
+  if (prepared.input_vertices != mesh.num_vertices() || prepared.global.size() != at(kGlobalSpectrumLength))
     throw InvalidArgument("surface_spectra: " + where + ": a spectra surface of a mesh of " +
                           std::to_string(prepared.input_vertices) + " vertices for one of " +
-                          std::to_string(mesh.num_vertices()));
+                          std::to_string(mesh.num_vertices()) + ", or not made by spectra_surface");
   for (const Index r : vertex_region)
     if (r < 0 || r >= regions)
       throw InvalidArgument("surface_spectra: " + where + ": region label " + std::to_string(r) + " outside [0, " +
@@ -177,37 +215,9 @@ SurfaceSpectra surface_spectra(const Mesh& mesh, const SpectraSurface& prepared,
     if (r != kInvalidIndex) region_area[at(r)] += area;
   }
 
-  // The coarse copy of a connected piece: decimated to about `vertices` /
-  // #V of its vertices. The piece itself where the frame is ill-defined (its
-  // coarse copies would differ with the rounding: a quadric collapse's choice
-  // between collapses of nearly equal cost, as on the flat faces of a
-  // mechanical part, turns on a change of the last bit), where the
-  // decimation leaves a triangle it cannot repair, or where it cuts the
-  // piece in two: slower, not wrong.
-  const auto ratio = [&](Index vertices) {
-    return prepared.axis_gap < options.min_axis_gap
-               ? 1.0
-               : std::min(1.0, static_cast<double>(vertices) / static_cast<double>(surface.num_vertices()));
-  };
-  const auto coarsened = [](const Mesh& m, double r) { return decimated_or_whole(m, r, 0.05).mesh; };
-  const double region_ratio = ratio(options.coarse_vertices);
-  const Mesh global_copy = coarsened(surface, ratio(options.global_vertices));
-
+  const double region_ratio = coarse_ratio(surface, prepared.axis_gap, options.coarse_vertices, options);
   SurfaceSpectra out;
-  out.global.assign(at(kGlobalSpectrumLength), 0.0);
-  ShapeDnaOptions global;
-  global.eigenvalues = kGlobalSpectrumLength;
-  global.margin = 4;
-  // The global copy; where the operator or the iterations cannot take it,
-  // the surface itself; where they cannot take that either (a handful of
-  // vertices), zeros, as for a region too small.
-  for (const Mesh* m : {&global_copy, &surface}) {
-    try {
-      squash(shape_dna(*m, global), kGlobalSpectrumLength, out.global.data());
-      break;
-    } catch (const InvalidMeshError&) {
-    }
-  }
+  out.global = prepared.global;
 
   const int n = kRegionSpectrumLength;
   out.region.assign(at(regions) * at(n), 0.0);

@@ -85,12 +85,15 @@ struct SpectraSurface {
   Index input_vertices = 0;
   /// CanonicalCopy::axis_gap of the input.
   double axis_gap = 0.0;
+  /// SurfaceSpectra::global: the whole surface's spectrum needs no regions,
+  /// so it is computed with the surface, while the graph is built.
+  std::vector<double> global;
   /// `mesh` is a decimation of the canonical copy (not the copy itself).
   bool decimated() const { return mesh.num_vertices() < input_vertices; }
 };
 
-/// The surface the spectra of `mesh` are computed on. Throws
-/// InvalidArgument for options out of range.
+/// The surface the spectra of `mesh` are computed on, and its spectrum.
+/// Throws InvalidArgument for options out of range.
 SpectraSurface spectra_surface(const Mesh& mesh, const SpectraOptions& options = {});
 
 struct SurfaceSpectra {

@@ -21,8 +21,8 @@ struct AnalysisOptions {
   ReebOptions reeb;         ///< Reeb graph construction
   bool reeb_graph = true;   ///< false: stop after f_q (no Reeb graph)
   /// With a Reeb graph, also prepare the surface the attributes' spectra are
-  /// computed on (MeshAnalysis::spectra), beside the graph on a second
-  /// thread where one is free; compute_attributes reuses it. false: the
+  /// computed on and its spectrum (MeshAnalysis::spectra), beside the graph
+  /// on a second thread where one is free; compute_attributes reuses them. false: the
   /// analysis is the graph alone, and compute_attributes prepares it.
   bool spectra_surface = true;
 };
@@ -33,7 +33,8 @@ struct AnalysisTimings {
   double features = 0;  ///< extract_feature_points
   double quotient = 0;  ///< quotient_function
   double reeb = 0;      ///< build_reeb_graph (0 when not built)
-  /// spectra_surface (region_spectra.h), for the attributes: run alongside
+  /// spectra_surface (region_spectra.h: the surface of the attributes'
+  /// spectra and the whole surface's spectrum): run alongside
   /// features .. Reeb graph where a second thread is free, so not in total().
   double spectra_surface = 0;
   double total() const { return graph + features + quotient + reeb; }
@@ -46,8 +47,8 @@ struct MeshAnalysis {
   FeaturePoints features;
   QuotientFunction fq;
   ReebGraph reeb;  ///< empty when options.reeb_graph is false
-  /// The surface the attributes' spectra are computed on (spectra_surface,
-  /// region_spectra.h); empty unless options.reeb_graph and
+  /// The surface the attributes' spectra are computed on, and its spectrum
+  /// (spectra_surface, region_spectra.h); empty unless options.reeb_graph and
   /// options.spectra_surface.
   SpectraSurface spectra;
   AnalysisTimings timings;
@@ -55,7 +56,7 @@ struct MeshAnalysis {
 
 /// Runs the pipeline on a cleaned, connected mesh (see load_mesh). With a
 /// Reeb graph (and options.spectra_surface), the surface of the attributes'
-/// spectra is prepared on a second OpenMP thread while the feature points,
+/// spectra and its spectrum are prepared on a second OpenMP thread while the feature points,
 /// f_q and the graph are computed (on one thread inside a parallel region,
 /// e.g. reeb index's workers). Throws InvalidArgument when the mesh graph is
 /// not connected.
