@@ -236,25 +236,22 @@ Triangles triangulate_soup(const PolygonSoup& soup, const std::vector<Index>& re
 /// bucket is sorted instead.
 Index drop_duplicate_triangles(Triangles& triangles, Index num_vertices) {
   const auto count = static_cast<std::size_t>(triangles.rows());
-  const Index* const corner = triangles.data();
-  // Triangle t's vertices in increasing order (a sorting network of three),
-  // computed where compared rather than stored: a copy of every triangle
-  // costs more than the few comparisons a bucket needs.
-  const auto triple = [&](Index t) {
-    const Index* v = corner + 3 * static_cast<std::size_t>(t);
-    Index a = v[0], b = v[1], c = v[2];
-    if (a > b) std::swap(a, b);
+  std::vector<std::array<Index, 3>> sorted(count);
+  std::vector<Index> start(static_cast<std::size_t>(num_vertices) + 1, 0);
+  for (std::size_t t = 0; t < count; ++t) {
+    Index a = triangles(static_cast<Index>(t), 0), b = triangles(static_cast<Index>(t), 1),
+          c = triangles(static_cast<Index>(t), 2);
+    if (a > b) std::swap(a, b);  // a sorting network of three
     if (b > c) std::swap(b, c);
     if (a > b) std::swap(a, b);
-    return std::array<Index, 3>{a, b, c};
-  };
-  const auto smallest = [&](std::size_t t) { return std::min({corner[3 * t], corner[3 * t + 1], corner[3 * t + 2]}); };
-  std::vector<Index> start(static_cast<std::size_t>(num_vertices) + 1, 0);
-  for (std::size_t t = 0; t < count; ++t) ++start[static_cast<std::size_t>(smallest(t)) + 1];
+    sorted[t] = {a, b, c};
+    ++start[static_cast<std::size_t>(a) + 1];
+  }
   for (std::size_t v = 0; v < static_cast<std::size_t>(num_vertices); ++v) start[v + 1] += start[v];
   std::vector<Index> bucket(count), fill(start.begin(), start.end() - 1);
   for (std::size_t t = 0; t < count; ++t)
-    bucket[static_cast<std::size_t>(fill[static_cast<std::size_t>(smallest(t))]++)] = static_cast<Index>(t);
+    bucket[static_cast<std::size_t>(fill[static_cast<std::size_t>(sorted[t][0])]++)] = static_cast<Index>(t);
+  const auto triple = [&](Index t) { return sorted[static_cast<std::size_t>(t)]; };
   std::vector<std::uint8_t> duplicate(count, 0);
   for (std::size_t v = 0; v < static_cast<std::size_t>(num_vertices); ++v) {
     const auto first = bucket.begin() + start[v], last = bucket.begin() + start[v + 1];
