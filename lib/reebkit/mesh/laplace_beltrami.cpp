@@ -46,13 +46,13 @@ Pattern edge_pattern(const std::vector<Element>& elements, Index n) {
   std::vector<Candidate> candidates(static_cast<std::size_t>(count.back()));
   std::vector<int> fill(count.begin(), count.end() - 1);
   for (std::size_t e = 0; e < elements.size(); ++e)
-    for (int c = 0; c < 3; ++c)
+    for (int c = 0; c < 3; ++c) {
+      const auto col = static_cast<std::size_t>(elements[e].v[static_cast<std::size_t>(c)]);
       for (int r = 0; r < 3; ++r) {
-        const auto col = static_cast<std::size_t>(elements[e].v[static_cast<std::size_t>(c)]);
-        candidates[static_cast<std::size_t>(fill[col]++)] = {static_cast<int>(
-                                                                 elements[e].v[static_cast<std::size_t>(r)]),
-                                                             static_cast<int>(9 * e) + 3 * r + c};
+        const auto row = static_cast<int>(elements[e].v[static_cast<std::size_t>(r)]);
+        candidates[static_cast<std::size_t>(fill[col]++)] = {row, static_cast<int>(9 * e) + 3 * r + c};
       }
+    }
   p.outer.assign(static_cast<std::size_t>(n) + 1, 0);
   p.inner.reserve(candidates.size() / 2 + static_cast<std::size_t>(n));
   p.at.resize(9 * elements.size());
