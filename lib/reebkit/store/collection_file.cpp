@@ -763,8 +763,13 @@ OpenCollection open_collection(const fs::path& path) {
   return c;
 }
 
-/// Entries [first, first + n) read with one call per dataset.
-std::vector<GraphRecord> read_entries(const Tables& t, std::int64_t first, std::int64_t n) {
+/// Every entry's offsets into each part (size + 1, checked), indexed by part.
+using EntryOffsets = std::array<std::vector<std::int64_t>, kPartCount>;
+
+/// Entries [first, first + n) read with one call per dataset; their offsets
+/// from `offsets` when given (read whole before), else read with them.
+std::vector<GraphRecord> read_entries(const Tables& t, const EntryOffsets* offsets, std::int64_t first,
+                                      std::int64_t n) {
   const std::vector<Dataset>& specs = datasets();
   std::vector<GraphRecord> out(static_cast<std::size_t>(n));
   // Entry k's rows of part p: [bounds[p][k], bounds[p][k + 1]).
@@ -775,9 +780,15 @@ std::vector<GraphRecord> read_entries(const Tables& t, std::int64_t first, std::
     if (!spec.is_offsets()) continue;
     const std::vector<std::int64_t>& rows = bounds[spec.part];
     const std::int64_t row0 = rows.front();
-    const std::vector<std::int64_t> offset =
-        t.table[d].read_vector<std::int64_t>(static_cast<hsize_t>(row0), static_cast<hsize_t>(rows.back() - row0 + 1));
-    check_offsets(offset, t.rows_of(spec.indexes), spec.name);
+    std::vector<std::int64_t> offset;
+    if (spec.part == kEntry && offsets != nullptr) {
+      const std::vector<std::int64_t>& whole = (*offsets)[spec.indexes];
+      offset.assign(whole.begin() + first, whole.begin() + first + n + 1);
+    } else {
+      offset = t.table[d].read_vector<std::int64_t>(static_cast<hsize_t>(row0),
+                                                    static_cast<hsize_t>(rows.back() - row0 + 1));
+      check_offsets(offset, t.rows_of(spec.indexes), spec.name);
+    }
     for (const std::int64_t r : rows) bounds[spec.indexes].push_back(offset[static_cast<std::size_t>(r - row0)]);
     if (spec.local == nullptr) continue;
     for (std::size_t k = 0; k < out.size(); ++k) {
@@ -833,6 +844,24 @@ struct CollectionReader::Impl : OpenCollection {
   }
   const TextColumn& text(std::optional<TextColumn>& column, const char* name) const {
     return lazy(column, "reading the entries' text", [&] { return TextColumn(tables, snapshot, name); });
+  }
+  /// Entries read so far with their own offsets; past kEntriesReadAlone the
+  /// offsets are read whole (entries looked up one by one: Python's c[i]).
+  mutable std::int64_t entries_read_alone = 0;
+  static constexpr std::int64_t kEntriesReadAlone = 64;
+  mutable std::optional<EntryOffsets> offsets;
+  /// The whole offsets when they were read, or are now worth reading
+  /// before `count` more entries; nullptr: read them with the entries.
+  const EntryOffsets* offsets_for(std::int64_t count) const {
+    if (!offsets && (entries_read_alone += count) > kEntriesReadAlone)
+      offsets = guarded(path, "reading the offsets", [&] {
+        EntryOffsets whole;
+        for (const Dataset& spec : datasets())
+          if (spec.part == kEntry && spec.is_offsets())
+            whole[spec.indexes] = entry_offsets(tables, snapshot, spec.indexes);
+        return whole;
+      });
+    return offsets ? &*offsets : nullptr;
   }
   /// Texts read alone so far; past kTextsReadAlone a column is read whole
   /// (a process that keeps querying: its later results are then look-ups).
@@ -905,7 +934,8 @@ GraphRecord CollectionReader::entry(std::int64_t i) const {
   if (i < 0 || i >= size())
     throw InvalidArgument(impl_->path.string() + ": entry " + std::to_string(i) + " out of range (the file holds " +
                           std::to_string(size()) + ")");
-  return guarded(impl_->path, "reading an entry", [&] { return std::move(read_entries(impl_->tables, i, 1).front()); });
+  return guarded(impl_->path, "reading an entry",
+                 [&] { return std::move(read_entries(impl_->tables, impl_->offsets_for(1), i, 1).front()); });
 }
 
 std::vector<GraphRecord> CollectionReader::entries(std::int64_t first, std::int64_t count) const {
@@ -914,7 +944,8 @@ std::vector<GraphRecord> CollectionReader::entries(std::int64_t first, std::int6
                           std::to_string(first + count - 1) + " out of range (the file holds " +
                           std::to_string(size()) + ")");
   if (count == 0) return {};
-  return guarded(impl_->path, "reading entries", [&] { return read_entries(impl_->tables, first, count); });
+  return guarded(impl_->path, "reading entries",
+                 [&] { return read_entries(impl_->tables, impl_->offsets_for(count), first, count); });
 }
 
 // ---------------------------------------------------------------------------
@@ -1094,7 +1125,7 @@ CollectionWriter::CollectionWriter(const fs::path& path, const Provenance& prove
         const std::int64_t n = old.snapshot.size;
         for (std::int64_t first = 0; first < n; first += static_cast<std::int64_t>(kBatchEntries)) {
           const std::int64_t count = std::min<std::int64_t>(static_cast<std::int64_t>(kBatchEntries), n - first);
-          auto entries = guarded(path, "reading", [&] { return read_entries(old.tables, first, count); });
+          auto entries = guarded(path, "reading", [&] { return read_entries(old.tables, nullptr, first, count); });
           for (GraphRecord& e : entries) {
             w.existing.emplace_back(e.name, e.content_hash);
             append(std::move(e));
@@ -1302,7 +1333,7 @@ void QueryFile::write(const CollectionReader& collection, const double* rows, co
     }
     for (std::int64_t first = 0; first < c.snapshot.size; first += kQueryWriteBatch) {
       const std::int64_t n = std::min(kQueryWriteBatch, c.snapshot.size - first);
-      const std::vector<GraphRecord> entries = read_entries(c.tables, first, n);
+      const std::vector<GraphRecord> entries = read_entries(c.tables, nullptr, first, n);
       for (std::size_t d = 0; d < kQueryGraphDatasets.size(); ++d) {
         const Dataset& spec = datasets()[dataset_index(kQueryGraphDatasets[d])];
         std::vector<char> data;
