@@ -139,10 +139,20 @@ TEST_F(ReebMpiCli, DistancesOfTwoAndThreeProcessesAreBitIdenticalToOneProcess) {
   }
 }
 
+/// The text of /proc/PID/`file`; empty when the process is gone, also while
+/// it is read (libstdc++ throws on the read that fails with ESRCH).
+std::string proc_text(const std::filesystem::path& process, const char* file) {
+  try {
+    std::ifstream in(process / file, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
+  } catch (const std::ios_base::failure&) {
+    return {};
+  }
+}
+
 /// The parent of process `pid`; 0 when it is gone.
 pid_t parent_of(pid_t pid) {
-  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
-  const std::string text((std::istreambuf_iterator<char>(stat)), {});
+  const std::string text = proc_text("/proc/" + std::to_string(pid), "stat");
   const auto close = text.rfind(')');
   if (close == std::string::npos) return 0;
   std::istringstream fields(text.substr(close + 2));
@@ -163,8 +173,7 @@ pid_t rank_pid(pid_t ancestor, int rank) {
     pid_t up = parent_of(pid);
     while (up > 1 && up != ancestor) up = parent_of(up);
     if (up != ancestor) continue;
-    std::ifstream environ(entry.path() / "environ", std::ios::binary);
-    const std::string variables((std::istreambuf_iterator<char>(environ)), {});
+    const std::string variables = proc_text(entry.path(), "environ");
     if (variables.find(std::string("OMPI_COMM_WORLD_RANK=") + std::to_string(rank) + '\0') != std::string::npos)
       return pid;
   }
