@@ -853,15 +853,24 @@ struct CollectionReader::Impl : OpenCollection {
   /// The whole offsets when they were read, or are now worth reading
   /// before `count` more entries; nullptr: read them with the entries.
   const EntryOffsets* offsets_for(std::int64_t count) const {
-    if (!offsets && (entries_read_alone += count) > kEntriesReadAlone)
-      offsets = guarded(path, "reading the offsets", [&] {
-        EntryOffsets whole;
-        for (const Dataset& spec : datasets())
-          if (spec.part == kEntry && spec.is_offsets())
-            whole[spec.indexes] = entry_offsets(tables, snapshot, spec.indexes);
-        return whole;
-      });
+    if (!offsets && (entries_read_alone += count) > kEntriesReadAlone) all_offsets();
     return offsets ? &*offsets : nullptr;
+  }
+  /// Every entry's offsets, read whole on first use.
+  const EntryOffsets& all_offsets() const {
+    return lazy(offsets, "reading the offsets", [&] {
+      EntryOffsets whole;
+      for (const Dataset& spec : datasets())
+        if (spec.part == kEntry && spec.is_offsets())
+          whole[spec.indexes] = entry_offsets(tables, snapshot, spec.indexes);
+      return whole;
+    });
+  }
+  /// Throws InvalidArgument unless entry i is in the file.
+  void check_entry(std::int64_t i) const {
+    if (i < 0 || i >= snapshot.size)
+      throw InvalidArgument(path.string() + ": entry " + std::to_string(i) + " out of range (the file holds " +
+                            std::to_string(snapshot.size) + ")");
   }
   /// Texts read alone so far; past kTextsReadAlone a column is read whole
   /// (a process that keeps querying: its later results are then look-ups).
@@ -869,9 +878,7 @@ struct CollectionReader::Impl : OpenCollection {
   static constexpr int kTextsReadAlone = 200;
   /// Entry i's text, from `column` when it was read, else read alone.
   std::string text_of(std::optional<TextColumn>& column, const char* name, std::int64_t i) const {
-    if (i < 0 || i >= snapshot.size)
-      throw InvalidArgument(path.string() + ": entry " + std::to_string(i) + " out of range (the file holds " +
-                            std::to_string(snapshot.size) + ")");
+    check_entry(i);
     if (column || ++texts_read_alone > kTextsReadAlone)
       return std::string(text(column, name).at(static_cast<std::size_t>(i)));
     return guarded(path, "reading the entries' text", [&] { return read_text(tables, name, i); });
@@ -906,11 +913,9 @@ const std::vector<std::uint64_t>& CollectionReader::content_hashes() const {
   });
 }
 const std::vector<double>& CollectionReader::signatures() const {
-  if (!impl_->signatures)
-    impl_->signatures = guarded(impl_->path, "reading the signatures", [&] {
-      return impl_->tables.named("signature").read_vector<double>(0, static_cast<hsize_t>(size()));
-    });
-  return *impl_->signatures;
+  return impl_->lazy(impl_->signatures, "reading the signatures", [&] {
+    return impl_->tables.named("signature").read_vector<double>(0, static_cast<hsize_t>(size()));
+  });
 }
 const Provenance& CollectionReader::provenance() const { return impl_->snapshot.provenance; }
 
@@ -931,9 +936,7 @@ std::optional<std::int64_t> CollectionReader::find(const std::string& name) cons
 }
 
 GraphRecord CollectionReader::entry(std::int64_t i) const {
-  if (i < 0 || i >= size())
-    throw InvalidArgument(impl_->path.string() + ": entry " + std::to_string(i) + " out of range (the file holds " +
-                          std::to_string(size()) + ")");
+  impl_->check_entry(i);
   return guarded(impl_->path, "reading an entry",
                  [&] { return std::move(read_entries(impl_->tables, impl_->offsets_for(1), i, 1).front()); });
 }
@@ -1303,9 +1306,7 @@ void QueryFile::write(const CollectionReader& collection, const double* rows, co
   const fs::path path = path_of(c.path);
   fs::path temporary = path;
   temporary += ".partial";
-  std::array<std::vector<std::int64_t>, kPartCount> offsets;
-  for (const Part part : {kNode, kEdge})
-    offsets[part] = guarded(c.path, "reading", [&] { return entry_offsets(c.tables, c.snapshot, part); });
+  const EntryOffsets& offsets = c.all_offsets();
   const Dataset& signature_spec = datasets()[dataset_index("signature")];
   const auto write_file = [&] {
     H5::H5File file(temporary.string(), H5F_ACC_TRUNC);
@@ -1333,7 +1334,7 @@ void QueryFile::write(const CollectionReader& collection, const double* rows, co
     }
     for (std::int64_t first = 0; first < c.snapshot.size; first += kQueryWriteBatch) {
       const std::int64_t n = std::min(kQueryWriteBatch, c.snapshot.size - first);
-      const std::vector<GraphRecord> entries = read_entries(c.tables, nullptr, first, n);
+      const std::vector<GraphRecord> entries = read_entries(c.tables, &offsets, first, n);
       for (std::size_t d = 0; d < kQueryGraphDatasets.size(); ++d) {
         const Dataset& spec = datasets()[dataset_index(kQueryGraphDatasets[d])];
         std::vector<char> data;
