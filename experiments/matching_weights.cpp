@@ -82,10 +82,11 @@ struct Setting {
 std::string describe(const Options& o) {
   char text[300];
   std::snprintf(text, sizeof text,
-                "spectrum %g, global spectrum %g (%d eigenvalues, scale %g), geodesic shape %g, profile %g, unmatched "
-                "%g, shape %g, global D2 %g",
+                "spectrum %g, global spectrum %g (%d eigenvalues, scale %g), global heat %g (scale %g), geodesic "
+                "shape %g, profile %g, unmatched %g, shape %g, global D2 %g",
                 o.spectrum_weight, o.global_spectrum_weight, o.global_spectrum_eigenvalues, o.global_spectrum_scale,
-                o.geodesic_shape_weight, o.profile_weight, o.unmatched_cost, o.shape_weight, o.global_shape_weight);
+                o.global_heat_weight, o.global_heat_scale, o.geodesic_shape_weight, o.profile_weight, o.unmatched_cost,
+                o.shape_weight, o.global_shape_weight);
   return text;
 }
 
@@ -125,11 +126,27 @@ struct Choice {
     return std::make_pair(worst_rank[a], rank_sum[a]) < std::make_pair(worst_rank[b], rank_sum[b]);
   }
   std::vector<char> kept;
+  /// Per setting: it meets every aim. `aimed`: some setting kept does, and
+  /// the choice is among those.
+  std::vector<char> meets;
+  bool aimed = false;
   std::size_t chosen = 0;
+  /// Why setting k cannot be chosen, as the tables say it; "" if it can.
+  std::string note(std::size_t k) const {
+    return !kept[k] ? " (fails the guard)" : aimed && !meets[k] ? " (misses the aims)" : "";
+  }
+};
+
+/// An aim on a choosing collection (--aim NAME:NN,FT,DCG): its NN, FT and
+/// DCG at least these.
+struct Aim {
+  std::string name;
+  Scores floor;
 };
 
 Choice choose_among(const std::vector<Options>& settings, const std::vector<const Benchmark*>& choosing,
-                    const std::optional<Benchmark>& guard, const std::optional<Scores>& floor) {
+                    const std::optional<Benchmark>& guard, const std::optional<Scores>& floor,
+                    const std::vector<Aim>& aims) {
   Choice c;
   for (const Options& o : settings) {
     std::vector<Scores> s;
@@ -153,9 +170,18 @@ Choice choose_among(const std::vector<Options>& settings, const std::vector<cons
       const Scores s = score(*guard, settings[k]);
       c.kept[k] = s.nn >= floor->nn && s.ft >= floor->ft;
     }
+  c.meets.assign(settings.size(), 1);
+  for (const Aim& aim : aims)
+    for (std::size_t b = 0; b < choosing.size(); ++b)
+      if (choosing[b]->name == aim.name)
+        for (std::size_t k = 0; k < settings.size(); ++k) {
+          const Scores& s = c.scores[k][b];
+          c.meets[k] &= s.nn >= aim.floor.nn && s.ft >= aim.floor.ft && s.dcg >= aim.floor.dcg;
+        }
+  for (std::size_t k = 0; k < settings.size(); ++k) c.aimed |= c.kept[k] && c.meets[k];
   c.chosen = settings.size();
   for (std::size_t k = 0; k < settings.size(); ++k)
-    if (c.kept[k] && (c.chosen == settings.size() || c.before(k, c.chosen))) c.chosen = k;
+    if (c.kept[k] && (c.meets[k] || !c.aimed) && (c.chosen == settings.size() || c.before(k, c.chosen))) c.chosen = k;
   if (c.chosen == settings.size()) throw std::runtime_error("no setting passes the guard collection");
   return c;
 }
@@ -163,18 +189,21 @@ Choice choose_among(const std::vector<Options>& settings, const std::vector<cons
 int usage() {
   std::fprintf(stderr,
                "usage: matching_weights --choose A.h5 [B.h5 ...] [--report C.h5 ...] [--guard G.h5]\n"
-               "(collections indexed with --classes)\n");
+               "       [--aim NAME:NN,FT,DCG ...]\n"
+               "(collections indexed with --classes; NAME: a choosing collection's file name without .h5)\n");
   return 2;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> choose_paths, report_paths, guard_paths;
+  std::vector<std::string> choose_paths, report_paths, guard_paths, aim_texts;
   std::vector<std::string>* list = nullptr;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--choose"))
       list = &choose_paths;
+    else if (!std::strcmp(argv[i], "--aim"))
+      list = &aim_texts;
     else if (!std::strcmp(argv[i], "--report"))
       list = &report_paths;
     else if (!std::strcmp(argv[i], "--guard"))
@@ -185,6 +214,18 @@ int main(int argc, char** argv) {
       return usage();
   }
   if (choose_paths.empty() || guard_paths.size() > 1) return usage();
+  std::vector<Aim> aims;
+  for (const std::string& text : aim_texts) {
+    Aim aim;
+    char name[200];
+    if (std::sscanf(text.c_str(), "%199[^:]:%lf,%lf,%lf", name, &aim.floor.nn, &aim.floor.ft, &aim.floor.dcg) != 4)
+      return usage();
+    aim.name = name;
+    if (std::none_of(choose_paths.begin(), choose_paths.end(),
+                     [&](const std::string& p) { return std::filesystem::path(p).stem().string() == aim.name; }))
+      return usage();
+    aims.push_back(aim);
+  }
   try {
     std::vector<Benchmark> choose, report;
     for (const std::string& p : choose_paths) choose.push_back(load(p));
@@ -223,21 +264,30 @@ int main(int argc, char** argv) {
          "min node weight 0.01",
          [](Options& o) {
            o.shape_weight = 2, o.global_shape_weight = 1.6, o.spectrum_weight = o.global_spectrum_weight = 0;
+           o.global_heat_weight = 0;
            o.geodesic_shape_weight = 2, o.profile_weight = 32, o.unmatched_cost = 1.5;
            o.global_geodesic_weight = 0, o.min_node_weight = 0.01;
          }},
-        {"no spectra (spectrum 0, global spectrum 0)",
-         [](Options& o) { o.spectrum_weight = o.global_spectrum_weight = 0; }},
+        {"no spectra (spectrum 0, global spectrum 0, global heat 0)",
+         [](Options& o) { o.spectrum_weight = o.global_spectrum_weight = o.global_heat_weight = 0; }},
         {"global spectrum only (every other term 0)",
          [](Options& o) {
            o.attribute_weight = o.structure_weight = o.edge_weight = o.profile_weight = o.shape_weight = 0;
            o.geodesic_shape_weight = o.global_shape_weight = o.global_geodesic_weight = o.spectrum_weight = 0;
-           o.global_spectrum_weight = 1;
+           o.global_heat_weight = 0, o.global_spectrum_weight = 1;
          }},
         {"spectrum 0", [](Options& o) { o.spectrum_weight = 0; }},
         {"global spectrum: 16 eigenvalues", [](Options& o) { o.global_spectrum_eigenvalues = 16; }},
         {"global spectrum: scale 0.1 (nearer linear)", [](Options& o) { o.global_spectrum_scale = 0.1; }},
         {"global spectrum 0", [](Options& o) { o.global_spectrum_weight = 0; }},
+        {"global heat only (every other term 0)",
+         [](Options& o) {
+           o.attribute_weight = o.structure_weight = o.edge_weight = o.profile_weight = o.shape_weight = 0;
+           o.geodesic_shape_weight = o.global_shape_weight = o.global_geodesic_weight = o.spectrum_weight = 0;
+           o.global_spectrum_weight = 0, o.global_heat_weight = 1;
+         }},
+        {"global heat 0", [](Options& o) { o.global_heat_weight = 0; }},
+        {"spectrum 8", [](Options& o) { o.spectrum_weight = 8; }},
         {"+ Euclidean: shape 2", [](Options& o) { o.shape_weight = 2; }},
         {"+ Euclidean: global D2 1.6", [](Options& o) { o.global_shape_weight = 1.6; }},
         {"global geodesic 0.8", [](Options& o) { o.global_geodesic_weight = 0.8; }},
@@ -262,15 +312,17 @@ int main(int argc, char** argv) {
     base.min_node_weight = 0.01, base.attribute_weight = 4, base.global_geodesic_weight = 0;
     std::vector<Options> grid;
     for (const double spectrum : {0.0, 4.0, 8.0})
-      for (const double global_spectrum : {2.0, 4.0, 8.0, 16.0})
-        for (const int eigenvalues : {8, 12, 16})
-          for (const double scale : {0.005, 0.01, 0.02, 0.05})
-            for (const double geodesic_shape : {0.0, 2.0})
+      for (const double global_spectrum : {4.0, 8.0, 16.0})
+        for (const double scale : {0.005, 0.01})
+          for (const double heat : {0.0, 2.0, 4.0, 8.0})
+            for (const double heat_scale : {0.01, 0.03})
               for (const double unmatched : {1.0, 1.5}) {
+                if (heat == 0 && heat_scale != 0.01) continue;  // the same setting
                 Options o = base;
                 o.spectrum_weight = spectrum, o.global_spectrum_weight = global_spectrum;
-                o.global_spectrum_eigenvalues = eigenvalues, o.global_spectrum_scale = scale;
-                o.geodesic_shape_weight = geodesic_shape, o.profile_weight = 16, o.unmatched_cost = unmatched;
+                o.global_spectrum_eigenvalues = 12, o.global_spectrum_scale = scale;
+                o.global_heat_weight = heat, o.global_heat_scale = heat_scale;
+                o.geodesic_shape_weight = 0, o.profile_weight = 16, o.unmatched_cost = unmatched;
                 o.shape_weight = o.global_shape_weight = 0;
                 grid.push_back(o);
               }
@@ -279,22 +331,30 @@ int main(int argc, char** argv) {
     // The guard: NN and FT on its collection not below the current defaults'.
     const std::optional<Scores> floor = guard ? std::optional<Scores>(score(*guard, defaults)) : std::nullopt;
     reebkit::Timer timer;
-    const Choice first = choose_among(grid, choosing, guard, floor);
+    const Choice first = choose_among(grid, choosing, guard, floor, aims);
     const double seconds = timer.lap() / 1000.0;
     const std::vector<std::vector<Scores>>& scores = first.scores;
     const std::vector<char>& kept = first.kept;
     const std::size_t chosen = first.chosen;
-    const std::string guard_text =
+    std::string guard_text =
         guard ? " among the " + std::to_string(std::count(kept.begin(), kept.end(), 1)) +
                     " settings that keep NN and FT on " + guard->name + " at least at the current defaults' (" +
                     std::to_string(floor->nn).substr(0, 5) + ", " + std::to_string(floor->ft).substr(0, 5) + ")"
               : "";
+    for (const Aim& aim : aims) {
+      char text[200];
+      std::snprintf(text, sizeof text, "%s NN, FT and DCG at least %g, %g, %g", aim.name.c_str(), aim.floor.nn,
+                    aim.floor.ft, aim.floor.dcg);
+      guard_text += (&aim == &aims.front() ? (first.aimed ? ", meeting the aims (" : ", no setting meeting the aims (")
+                                           : std::string("; ")) +
+                    text + (&aim == &aims.back() ? ")" : "");
+    }
 
     std::printf(
-        "\n## Grid and the choice\n\n%zu settings (spectrum 0, 4, 8 x global spectrum 2, 4, 8, 16 x its "
-        "eigenvalues 8, 12, 16 x its scale 0.005, 0.01, 0.02, 0.05 x geodesic shape 0, 2 x unmatched 1, 1.5; "
-        "profile 16, shape and global D2 0; min node weight 0.01, attribute 4, global geodesic 0; the other "
-        "weights at their defaults), %.0f s on the choosing collections. Score: the mean of NN, FT and DCG. "
+        "\n## Grid and the choice\n\n%zu settings (spectrum 0, 4, 8 x global spectrum 4, 8, 16 at 12 "
+        "eigenvalues x its scale 0.005, 0.01 x global heat 0, 2, 4, 8 x its scale 0.01, 0.03 x unmatched 1, 1.5; "
+        "profile 16, geodesic shape, shape and global D2 0; min node weight 0.01, attribute 4, global geodesic 0; "
+        "the other weights at their defaults), %.0f s on the choosing collections. Score: the mean of NN, FT and DCG. "
         "Each row is scored on every collection; the reporting ones played no part in the choice.\n\n%s",
         grid.size(), seconds, header(all).c_str());
     for (std::size_t c = 0; c < choose.size(); ++c) {
@@ -318,7 +378,7 @@ int main(int argc, char** argv) {
           o.global_geodesic_weight = global_geodesic;
           around.push_back(o);
         }
-    const Choice second = choose_among(around, choosing, guard, floor);
+    const Choice second = choose_among(around, choosing, guard, floor, aims);
     std::printf(
         "\nAround the grid's choice: min node weight 0.01, 0.05 x attribute 4, 8 x global geodesic 0, 0.8, "
         "chosen the same way among these %zu settings (**bold**: the choice, MatchingOptions' default).\n\n%s",
@@ -327,7 +387,7 @@ int main(int argc, char** argv) {
       char text[120];
       std::snprintf(text, sizeof text, "min node weight %g, attribute %g, global geodesic %g%s",
                     around[k].min_node_weight, around[k].attribute_weight, around[k].global_geodesic_weight,
-                    second.kept[k] ? "" : " (fails the guard)");
+                    second.note(k).c_str());
       print_row(k == second.chosen ? "**" + std::string(text) + "**" : std::string(text), on(all, around[k]));
     }
 
@@ -339,7 +399,7 @@ int main(int argc, char** argv) {
         "choosing collections:\n\n%s",
         header(choosing).c_str());
     for (std::size_t k = 0; k < std::min<std::size_t>(10, order.size()); ++k)
-      print_row(describe(grid[order[k]]) + (kept[order[k]] ? "" : " (fails the guard)"), scores[order[k]]);
+      print_row(describe(grid[order[k]]) + first.note(order[k]), scores[order[k]]);
     std::printf("\n<details><summary>The whole grid, in grid order</summary>\n\n%s", header(choosing).c_str());
     for (std::size_t k = 0; k < grid.size(); ++k) print_row(describe(grid[k]), scores[k]);
     std::printf("\n</details>\n");

@@ -53,6 +53,14 @@ Mesh punched(const Mesh& mesh) {
   return out;
 }
 
+/// The default analysis with the regions' spectra on (off by default), so
+/// that every test sees them too.
+AnalysisOptions with_regions() {
+  AnalysisOptions options;
+  options.spectra.regions = true;
+  return options;
+}
+
 struct Case {
   std::string name;
   MeshAnalysis analysis;
@@ -65,12 +73,14 @@ const std::vector<Case>& cases() {
     star.levels = 4;
     star.twist = 0.3;
     std::vector<Case> c;
-    c.push_back({"star", analyze_mesh(make_star(star))});
-    c.push_back({"punched star", analyze_mesh(punched(make_star(star)))});
-    c.push_back({"torus", analyze_mesh(make_torus(60, 20, 1.0, 0.3))});
-    c.push_back({"capsule", analyze_mesh(test::make_capsule(1.0, 30.0, 48, 12))});
-    c.push_back({"bunny", analyze_mesh(load_mesh(test::embedded_dataset_dir() / "bunny.off").components.front())});
-    c.push_back({"elk", analyze_mesh(load_mesh(test::embedded_dataset_dir() / "elk.off").components.front())});
+    c.push_back({"star", analyze_mesh(make_star(star), with_regions())});
+    c.push_back({"punched star", analyze_mesh(punched(make_star(star)), with_regions())});
+    c.push_back({"torus", analyze_mesh(make_torus(60, 20, 1.0, 0.3), with_regions())});
+    c.push_back({"capsule", analyze_mesh(test::make_capsule(1.0, 30.0, 48, 12), with_regions())});
+    c.push_back({"bunny", analyze_mesh(load_mesh(test::embedded_dataset_dir() / "bunny.off").components.front(),
+                                       with_regions())});
+    c.push_back(
+        {"elk", analyze_mesh(load_mesh(test::embedded_dataset_dir() / "elk.off").components.front(), with_regions())});
     return c;
   }();
   return all;
@@ -264,7 +274,8 @@ double max_difference(const std::vector<double>& a, const std::vector<double>& b
 }
 
 /// Every attribute of `g` against `reference`: the same up to rounding
-/// (`relative`), but for the Laplace-Beltrami spectra, computed by Lanczos
+/// (`relative`), but for the Laplace-Beltrami spectra and the heat kernel
+/// distribution from their eigenpairs, computed by Lanczos
 /// iterations on a copy whose coordinates are rounded to a grid
 /// (attributes/region_spectra.h): those within `spectral` (they lie in [0, 1)).
 void expect_same_attributes(const GraphAttributes& g, const GraphAttributes& reference, double relative,
@@ -273,8 +284,7 @@ void expect_same_attributes(const GraphAttributes& g, const GraphAttributes& ref
     return columns(x.node, kNodeAttributeCount, kNodeSpectrum, kNodeSpectrum + kRegionSpectrumLength, spectra);
   };
   const auto signature = [](const GraphAttributes& x, bool spectra) {
-    return columns(x.signature, kSignatureLength, kSigGlobalSpectrum, kSigGlobalSpectrum + kGlobalSpectrumLength,
-                   spectra);
+    return columns(x.signature, kSignatureLength, kSigGlobalSpectrum, kSignatureLength, spectra);
   };
   EXPECT_LE(max_relative_difference(node(g, false), node(reference, false)), relative);
   EXPECT_LE(max_relative_difference(g.edge, reference.edge), relative);
@@ -364,7 +374,7 @@ TEST(GraphAttributes, InvariantToSimilarityTransforms) {
       t.rotation = random_rotation(seed);
       t.scale = std::pow(10.0, static_cast<double>(seed % 5) - 2.0);  // 0.01 .. 100
       t.translation = Vec3(1.5, -2.0, 7.0) * static_cast<double>(seed * seed);
-      const MeshAnalysis moved = analyze_mesh(transformed(a.mesh, t));
+      const MeshAnalysis moved = analyze_mesh(transformed(a.mesh, t), with_regions());
       ASSERT_EQ(moved.reeb.edges, a.reeb.edges) << "seed " << seed;
       SCOPED_TRACE(seed);
       expect_same_attributes(compute_attributes(moved), reference, 1e-9, 1e-6);
@@ -420,7 +430,7 @@ std::vector<Index> match_nodes(const ReebGraph& a, const ReebGraph& b) {
 // numbered alike, start it from vertex 0 (DiameterStart::Vertex), and the
 // test sees the attributes alone.
 TEST(GraphAttributes, DeformedPoseChangesAttributesLittle) {
-  AnalysisOptions from_vertex_0;
+  AnalysisOptions from_vertex_0 = with_regions();
   from_vertex_0.features.start = DiameterStart::Vertex;
   const MeshAnalysis a = analyze_mesh(cases()[0].analysis.mesh, from_vertex_0);
   DeformOptions turn;
@@ -554,7 +564,9 @@ TEST(GraphAttributes, InvariantToVertexRenumbering) {
     const GraphAttributes reference = compute_attributes(a);
     // The D2 histograms sample random points by triangle order, which the
     // renumbering keeps; all the other entries are sums over the surface.
-    expect_same_attributes(compute_attributes(mesh, build_mesh_graph(mesh), fq, features, reeb), reference, 1e-9, 1e-6);
+    expect_same_attributes(compute_attributes(mesh, build_mesh_graph(mesh), fq, features, reeb, nullptr,
+                                              with_regions().spectra),
+                           reference, 1e-9, 1e-6);
   }
 }
 
@@ -599,30 +611,40 @@ TEST(GraphAttributes, SpectraIgnoreABendAndSeeALongerArm) {
   DeformOptions turn;
   turn.node = leaf_of_feature(a, 0);
   turn.angle_degrees = 60.0;
-  const MeshAnalysis bent = analyze_mesh(deform_component(a, turn));
+  const MeshAnalysis bent = analyze_mesh(deform_component(a, turn), with_regions());
   ProportionOptions grow;
   grow.node = turn.node;
   grow.scale = 1.1;
   grow.thickness = 1.0 / 1.1;
-  const MeshAnalysis longer = analyze_mesh(apply_proportions(a.mesh, plan_proportions(a, grow)));
+  const MeshAnalysis longer = analyze_mesh(apply_proportions(a.mesh, plan_proportions(a, grow)), with_regions());
   // The spectrum of the region at the arm's tip (the vertices keep their
-  // numbers), then the whole surface's.
+  // numbers), then the whole surface's, then its heat kernel distribution.
+  struct Spectra {
+    std::vector<double> arm, whole, heat;
+  };
   const auto spectra = [tip](const MeshAnalysis& m) {
     const GraphAttributes g = compute_attributes(m);
     const auto row = g.node.begin() + m.reeb.vertex_node[static_cast<std::size_t>(tip)] * kNodeAttributeCount;
-    return std::pair{std::vector<double>(row + kNodeSpectrum, row + kNodeSpectrum + kRegionSpectrumLength),
-                     std::vector<double>(g.signature.begin() + kSigGlobalSpectrum, g.signature.end())};
+    const auto sig = g.signature.begin();
+    return Spectra{std::vector<double>(row + kNodeSpectrum, row + kNodeSpectrum + kRegionSpectrumLength),
+                   std::vector<double>(sig + kSigGlobalSpectrum, sig + kSigGlobalHeat),
+                   std::vector<double>(sig + kSigGlobalHeat, g.signature.end())};
   };
-  const auto [arm, whole] = spectra(a);
-  const auto [bent_arm, bent_whole] = spectra(bent);
-  const auto [longer_arm, longer_whole] = spectra(longer);
-  std::cout << "largest change of the arm's spectrum: " << max_difference(bent_arm, arm) << " bent, "
-            << max_difference(longer_arm, arm)
-            << " 10 % longer; of the whole surface's: " << max_difference(bent_whole, whole) << " bent, "
-            << max_difference(longer_whole, whole) << " longer\n";
-  EXPECT_GT(max_difference(longer_arm, arm), 0.01);
-  EXPECT_LT(3 * max_difference(bent_arm, arm), max_difference(longer_arm, arm));
-  EXPECT_LT(2 * max_difference(bent_whole, whole), max_difference(longer_whole, whole));
+  const Spectra star_spectra = spectra(a), bent_spectra = spectra(bent), longer_spectra = spectra(longer);
+  const auto change = [&](const Spectra& s, std::vector<double> Spectra::*part) {
+    return max_difference(s.*part, star_spectra.*part);
+  };
+  std::cout << "largest change of the arm's spectrum: " << change(bent_spectra, &Spectra::arm) << " bent, "
+            << change(longer_spectra, &Spectra::arm)
+            << " 10 % longer; of the whole surface's: " << change(bent_spectra, &Spectra::whole) << " bent, "
+            << change(longer_spectra, &Spectra::whole)
+            << " longer; of its heat kernel distribution: " << change(bent_spectra, &Spectra::heat) << " bent, "
+            << change(longer_spectra, &Spectra::heat) << " longer\n";
+  EXPECT_GT(change(longer_spectra, &Spectra::arm), 0.01);
+  EXPECT_LT(3 * change(bent_spectra, &Spectra::arm), change(longer_spectra, &Spectra::arm));
+  EXPECT_LT(2 * change(bent_spectra, &Spectra::whole), change(longer_spectra, &Spectra::whole));
+  EXPECT_GT(change(longer_spectra, &Spectra::heat), 0.005);
+  EXPECT_LT(2 * change(bent_spectra, &Spectra::heat), change(longer_spectra, &Spectra::heat));
 
   const GraphRecord star = make_graph_record(a, compute_attributes(a));
   const double to_bent = match_graphs(star, make_graph_record(bent, compute_attributes(bent))).distance;

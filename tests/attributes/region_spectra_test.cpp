@@ -30,6 +30,13 @@ std::vector<double> sphere_eigenvalues(int count) {
   return out;
 }
 
+/// The default options with the regions' spectra on.
+SpectraOptions with_regions() {
+  SpectraOptions options;
+  options.regions = true;
+  return options;
+}
+
 std::vector<Index> labels_by_height(const Mesh& mesh, double level = 0.0) {
   std::vector<Index> label(static_cast<std::size_t>(mesh.num_vertices()));
   for (Index v = 0; v < mesh.num_vertices(); ++v)
@@ -40,7 +47,7 @@ std::vector<Index> labels_by_height(const Mesh& mesh, double level = 0.0) {
 /// The largest difference between the spectra of `mesh` and those of three
 /// random similar copies with their vertices renumbered.
 double largest_change_under_similarity(const Mesh& mesh, const std::vector<Index>& label, Index regions,
-                                       const SpectraOptions& options = {}) {
+                                       const SpectraOptions& options = with_regions()) {
   const SurfaceSpectra before = surface_spectra(mesh, label, regions, options);
   std::mt19937_64 rng(7);
   double largest = 0.0;
@@ -68,13 +75,18 @@ TEST(RegionSpectra, SphereHasTheAnalyticSpectrum) {
     SCOPED_TRACE(levels);
     const Mesh sphere = make_icosphere(levels, 3.0);  // any radius: area-normalized
     const SurfaceSpectra s =
-        surface_spectra(sphere, std::vector<Index>(static_cast<std::size_t>(sphere.num_vertices()), 0), 1);
-    ASSERT_EQ(s.global.size(), static_cast<std::size_t>(kGlobalSpectrumLength));
+        surface_spectra(sphere, std::vector<Index>(static_cast<std::size_t>(sphere.num_vertices()), 0), 1,
+                        with_regions());
+    ASSERT_EQ(s.global.size(), static_cast<std::size_t>(kGlobalSpectrumLength + kGlobalHeatLength));
     const std::vector<double> exact = sphere_eigenvalues(kGlobalSpectrumLength);
     for (int k = 0; k < kGlobalSpectrumLength; ++k)
       EXPECT_NEAR(unsquash(s.global[static_cast<std::size_t>(k)]) / (exact[static_cast<std::size_t>(k)] / (k + 1)), 1.0,
                   0.03)
           << "lambda_" << k + 1;
+    // The heat kernel signature is the same everywhere: every quantile r of
+    // HKS / Z is 1, squashed to 1/2.
+    for (int k = 0; k < kGlobalHeatLength; ++k)
+      EXPECT_NEAR(s.global[static_cast<std::size_t>(kGlobalSpectrumLength + k)], 0.5, 0.003) << "heat entry " << k;
     // One region, the whole sphere: its spectrum is the global one's start
     // (its vertices renumbered, so decimated along other collapses).
     for (int k = 0; k < kRegionSpectrumLength; ++k)
@@ -89,7 +101,7 @@ TEST(RegionSpectra, SphereHasTheAnalyticSpectrum) {
 // edges, so it zig-zags about the equator.
 TEST(RegionSpectra, HemispheresHaveTheNeumannSpectrum) {
   const Mesh sphere = make_icosphere(5);
-  const SurfaceSpectra s = surface_spectra(sphere, labels_by_height(sphere), 2);
+  const SurfaceSpectra s = surface_spectra(sphere, labels_by_height(sphere), 2, with_regions());
   const double exact[kRegionSpectrumLength] = {2, 2, 6, 6, 6, 12};
   for (int r = 0; r < 2; ++r)
     for (int k = 0; k < kRegionSpectrumLength; ++k)
@@ -112,7 +124,7 @@ TEST(RegionSpectra, SimilarityAndRenumberingLeaveTheSpectraUnchanged) {
   ASSERT_GE(canonical_copy(star).axis_gap, SpectraOptions{}.min_axis_gap);
   EXPECT_LT(largest_change_under_similarity(star, labels_by_height(star), 2), 1e-6);
   // Also where the surface is first decimated to a finer copy (a large mesh).
-  SpectraOptions fine;
+  SpectraOptions fine = with_regions();
   fine.fine_vertices = star.num_vertices() / 2;
   ASSERT_TRUE(spectra_surface(star, fine).decimated());
   EXPECT_LT(largest_change_under_similarity(star, labels_by_height(star), 2, fine), 1e-6);
@@ -126,7 +138,7 @@ TEST(RegionSpectra, ALargeSurfaceDecimatedOnceFirstKeepsItsSpectra) {
   const Mesh bunny = subdivide_mesh(load_mesh(test::embedded_dataset_dir() / "bunny.off").components.front(), 1)
                          .mesh;  // 7,352 vertices
   ASSERT_LT(bunny.num_vertices(), SpectraOptions{}.fine_vertices);
-  SpectraOptions options;
+  SpectraOptions options = with_regions();
   options.fine_vertices = 4000;
   const SpectraSurface surface = spectra_surface(bunny, options);
   ASSERT_TRUE(surface.decimated());
@@ -139,7 +151,7 @@ TEST(RegionSpectra, ALargeSurfaceDecimatedOnceFirstKeepsItsSpectra) {
   const double middle = 0.5 * (bunny.vertices.col(1).minCoeff() + bunny.vertices.col(1).maxCoeff());
   std::vector<Index> label(static_cast<std::size_t>(bunny.num_vertices()));
   for (Index v = 0; v < bunny.num_vertices(); ++v) label[static_cast<std::size_t>(v)] = bunny.vertices(v, 1) >= middle;
-  const SurfaceSpectra direct = surface_spectra(bunny, label, 2);
+  const SurfaceSpectra direct = surface_spectra(bunny, label, 2, with_regions());
   const SurfaceSpectra staged = surface_spectra(bunny, surface, label, 2, options);
   double largest = 0.0;
   for (std::size_t k = 0; k < direct.global.size(); ++k)
@@ -181,7 +193,7 @@ TEST(RegionSpectra, TheWholeSurfaceSpectrumComesFromAFinerCopy) {
     }
     return largest;
   };
-  SpectraOptions finer, as_coarse;
+  SpectraOptions finer = with_regions(), as_coarse = with_regions();
   finer.global_vertices = bunny.num_vertices() / 2;
   as_coarse.global_vertices = as_coarse.coarse_vertices;
   const SurfaceSpectra fine = surface_spectra(bunny, label, 2, finer),
@@ -205,11 +217,16 @@ TEST(RegionSpectra, SmallRegionsGetZerosAndBadInputIsRefused) {
   const Mesh sphere = make_icosphere(3);
   std::vector<Index> label(static_cast<std::size_t>(sphere.num_vertices()), 0);
   label[0] = 1;  // a region of one vertex
-  const SurfaceSpectra s = surface_spectra(sphere, label, 2);
+  const SurfaceSpectra s = surface_spectra(sphere, label, 2, with_regions());
   for (int k = 0; k < kRegionSpectrumLength; ++k) {
     EXPECT_GT(s.region[static_cast<std::size_t>(k)], 0.0);
     EXPECT_EQ(s.region[static_cast<std::size_t>(kRegionSpectrumLength + k)], 0.0);
   }
+  // Without SpectraOptions::regions, zeros for every region; the whole
+  // surface's values are the same.
+  const SurfaceSpectra whole_only = surface_spectra(sphere, label, 2);
+  for (const double x : whole_only.region) EXPECT_EQ(x, 0.0);
+  EXPECT_EQ(whole_only.global, s.global);
   // A surface of 8 vertices has no 16 eigenvalues to give: zeros, no error
   // (reeb index still indexes its graph).
   const Mesh cube = make_cube();

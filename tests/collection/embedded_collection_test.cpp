@@ -39,10 +39,10 @@ struct PinnedGraph {
 // eight 2, elk 1, the others 0 = their genus). Update here, and only here,
 // when the graph or the attributes change on purpose.
 constexpr PinnedGraph kPinned[] = {
-    {"anchor.off", 15, 2, 4, 0x781ad358ccee8727ull}, {"bunny.off", 5, 3, 0, 0x5f4bca33171d5535ull},
-    {"cactus.off", 7, 4, 0, 0xabeb45c910624136ull},  {"cow.off", 17, 9, 0, 0x8a2c83f2bc28e796ull},
-    {"eight.off", 9, 2, 2, 0xe14325853d7a795aull},   {"elk.off", 14, 6, 1, 0xc9fbb3c6a9e2f269ull},
-    {"hand.off", 3, 2, 0, 0xd7f7944448d13604ull},    {"helmet.off", 12, 2, 3, 0xd73effec07a0d75aull},
+    {"anchor.off", 15, 2, 4, 0x452c8c1959688d73ull}, {"bunny.off", 5, 3, 0, 0xccc07c251633319bull},
+    {"cactus.off", 7, 4, 0, 0x49a66c49f7019997ull},  {"cow.off", 17, 9, 0, 0x9c4353664ce2cd95ull},
+    {"eight.off", 9, 2, 2, 0x473b1ef63d216d7bull},   {"elk.off", 14, 6, 1, 0x622c481602c739b0ull},
+    {"hand.off", 3, 2, 0, 0x867420ddbca0e6ccull},    {"helmet.off", 12, 2, 3, 0x80fae55e28c48f98ull},
 };
 
 // Retrieval on the variants collection (48 meshes, 8 classes of 6), as the

@@ -121,7 +121,7 @@ TEST(GraphMatching, SymmetricWithInverseCorrespondence) {
         EXPECT_EQ(ab.distance, ba.distance) << a.name << " vs " << b.name;
         EXPECT_GE(ab.distance, 0.0);
         EXPECT_LE(ab.distance, options.unmatched_cost + options.global_shape_weight + options.global_geodesic_weight +
-                                   options.global_spectrum_weight + 1e-12);
+                                   options.global_spectrum_weight + options.global_heat_weight + 1e-12);
         for (std::size_t i = 0; i < ab.correspondence.size(); ++i) {
           if (ab.correspondence[i] < 0) continue;
           EXPECT_EQ(ba.correspondence[static_cast<std::size_t>(ab.correspondence[i])], static_cast<std::int32_t>(i));
@@ -169,6 +169,7 @@ TEST(GraphMatching, DeletingEverythingCostsUnmatchedCost) {
   MatchingOptions options;
   options.unmatched_cost = 1e-9;
   options.global_shape_weight = options.global_geodesic_weight = options.global_spectrum_weight = 0.0;
+  options.global_heat_weight = 0.0;
   const GraphMatch m = match_graphs(shapes()[0], shapes()[3], options);
   EXPECT_NEAR(m.distance, options.unmatched_cost, 1e-15);
   for (const std::int32_t j : m.correspondence) EXPECT_EQ(j, -1);
@@ -335,6 +336,36 @@ TEST(GraphMatching, GlobalSpectrumTermSaturatesTheLogRatioOfTheEigenvalues) {
   EXPECT_EQ(match_graphs(a, b, options).distance, 0.0);
 }
 
+TEST(GraphMatching, GlobalHeatTermSaturatesTheMeanQuantileDifference) {
+  // The same graph with every heat kernel quantile r of the whole surface
+  // doubled (signature y = r / (1 + r) of r -> 2 r, ln r + ln 2): d = ln 2,
+  // g_h = w d / (d + scale).
+  const GraphRecord& a = shapes()[0];
+  MatchingOptions options;
+  options.global_spectrum_weight = 0.0;
+  options.global_heat_weight = 3.0;
+  options.global_heat_scale = 0.25;
+  GraphRecord b = a;
+  for (int k = 0; k < kGlobalHeatLength; ++k) {
+    double& y = b.signature[static_cast<std::size_t>(kSigGlobalHeat + k)];
+    ASSERT_GT(y, 0.0);
+    const double r = y / (1.0 - y) * 2.0;
+    y = r / (1.0 + r);
+  }
+  const double d = std::log(2.0);
+  EXPECT_NEAR(match_graphs(a, b, options).distance, 3.0 * d / (d + 0.25), 1e-9);
+  EXPECT_EQ(match_graphs(a, b, options).distance, match_graphs(b, a, options).distance);
+  // Only half of the quantiles doubled: d halves.
+  GraphRecord half = a;
+  std::copy_n(b.signature.begin() + kSigGlobalHeat, kGlobalHeatLength / 2, half.signature.begin() + kSigGlobalHeat);
+  EXPECT_NEAR(match_graphs(a, half, options).distance, 3.0 * (d / 2) / (d / 2 + 0.25), 1e-9);
+  options.global_heat_weight = 0.0;
+  EXPECT_EQ(match_graphs(a, b, options).distance, 0.0);
+  options.global_heat_weight = 1.0;
+  options.global_heat_scale = 0.0;
+  EXPECT_THROW(match_graphs(a, b, options), InvalidArgument);
+}
+
 TEST(GraphMatching, GlobalSpectrumOptionsAreChecked) {
   MatchingOptions options;
   options.global_spectrum_eigenvalues = kGlobalSpectrumLength + 1;
@@ -363,7 +394,7 @@ TEST(GraphMatching, PoseInvariantTermsKeepATurnedPartClose) {
   const GraphRecord turned = make_graph_record(posed, compute_attributes(posed));
   MatchingOptions euclidean;
   euclidean.attribute_weight = euclidean.structure_weight = euclidean.edge_weight = euclidean.profile_weight = 0.0;
-  euclidean.spectrum_weight = euclidean.global_spectrum_weight = 0.0;
+  euclidean.spectrum_weight = euclidean.global_spectrum_weight = euclidean.global_heat_weight = 0.0;
   MatchingOptions geodesic = euclidean;
   euclidean.geodesic_shape_weight = euclidean.global_geodesic_weight = 0.0;
   euclidean.shape_weight = 4.0;

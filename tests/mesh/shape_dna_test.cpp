@@ -212,7 +212,9 @@ TEST(ShapeDna, InvariantToRigidMotionScaleAndRenumbering) {
 // The distance is the Euclidean distance of lambda_k area / k over the
 // common length.
 TEST(ShapeDna, DistanceWeighsEachEigenvalueByItsIndex) {
-  const ShapeDna a{{10, 20, 30}, 1.0}, b{{13, 28, 30, 99}, 2.0};
+  ShapeDna a, b;
+  a.eigenvalues = {10, 20, 30}, a.area = 1.0;
+  b.eigenvalues = {13, 28, 30, 99}, b.area = 2.0;
   EXPECT_DOUBLE_EQ(shape_dna_distance(a, b), std::sqrt(3.0 * 3.0 + 4.0 * 4.0));
   EXPECT_EQ(shape_dna_distance(a, a), 0.0);
   EXPECT_EQ(shape_dna_distance(a, b), shape_dna_distance(b, a));

@@ -26,6 +26,7 @@ AnalysisOptions changed() {
   o.reeb.level_lines = LevelLines::Paper;
   o.reeb.leaves = Leaves::Propagation;
   o.reeb.skeleton_levels = 50;
+  o.spectra.regions = true;
   return o;
 }
 
@@ -55,13 +56,16 @@ TEST(AnalysisOptions, NamedOptionsRoundTrip) {
   EXPECT_EQ(back.holes.max_loop_length, 0.5);
   EXPECT_EQ(back.reeb.level_lines, LevelLines::Paper);
   // Options a file lacks keep their defaults, but for level_lines, leaves,
-  // feature_site and diameter_start: a file that predates them was analysed
-  // with Definition 6, every termination of the propagation, the feature
-  // points on their extrema and the diameter search from vertex 0.
+  // feature_site, diameter_start and region_spectra: a file that predates
+  // them was analysed with Definition 6, every termination of the
+  // propagation, the feature points on their extrema, the diameter search
+  // from vertex 0 and the regions' spectra.
   EXPECT_EQ(analysis_options_from({{"epsilon", 0.2}}).reeb.level_lines, LevelLines::Paper);
   EXPECT_EQ(analysis_options_from({{"epsilon", 0.2}}).reeb.leaves, Leaves::Propagation);
   EXPECT_EQ(analysis_options_from({{"epsilon", 0.2}}).features.site, FeatureSite::Extremum);
   EXPECT_EQ(analysis_options_from({{"epsilon", 0.2}}).features.start, DiameterStart::Vertex);
+  EXPECT_TRUE(analysis_options_from({{"epsilon", 0.2}}).spectra.regions);
+  EXPECT_FALSE(analysis_options_from({}).spectra.regions);
   EXPECT_EQ(analysis_options_from({}).reeb.level_lines, LevelLines::Contour);
   EXPECT_EQ(analysis_options_from({}).reeb.leaves, Leaves::Maxima);
   EXPECT_EQ(analysis_options_from({}).features.site, FeatureSite::Midpoint);
@@ -70,7 +74,8 @@ TEST(AnalysisOptions, NamedOptionsRoundTrip) {
                                                          {"level_lines", std::string("contour")},
                                                          {"leaves", std::string("maxima")},
                                                          {"feature_site", std::string("midpoint")},
-                                                         {"diameter_start", std::string("centroid")}});
+                                                         {"diameter_start", std::string("centroid")},
+                                                         {"region_spectra", std::int64_t{0}}});
   EXPECT_EQ(partial.features.epsilon, 0.2);
   const auto differences = analysis_option_differences(partial, AnalysisOptions{});
   ASSERT_EQ(differences.size(), 1u);

@@ -87,7 +87,7 @@ TEST(ReebOptionsCli, EveryFlagIsDescribedByItsRowWithItsValues) {
     expect_described(field, field.get(AnalysisOptions{}));
   for (const MatchingOptionField& field : matching_option_fields())
     expect_described(field, field.get(MatchingOptions{}));
-  EXPECT_NE(text.find("--unmatched-cost arg (=1.5) cost of deleting or inserting a node, per unit of node weight; "
+  EXPECT_NE(text.find("--unmatched-cost arg (=1) cost of deleting or inserting a node, per unit of node weight; "
                       "values in (0, inf)"),
             std::string::npos)
       << text;

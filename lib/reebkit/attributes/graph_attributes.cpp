@@ -391,7 +391,7 @@ void laplacian_spectrum(const ReebGraph& reeb, const std::vector<double>& degree
 
 GraphAttributes compute_attributes(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f,
                                    const FeaturePoints& features, const ReebGraph& reeb,
-                                   const SpectraSurface* spectra_surface) {
+                                   const SpectraSurface* spectra_surface, const SpectraOptions& spectra_options) {
   const double geodesic_diameter = features.diameter;
   const auto where = [&] { return mesh.source.empty() ? std::string("mesh in memory") : mesh.source; };
   if (reeb.nodes.empty())
@@ -416,8 +416,9 @@ GraphAttributes compute_attributes(const Mesh& mesh, const MeshGraph& graph, con
   SurfaceSpectra spectra;
   run_side_by_side(
       [&] {
-        spectra = spectra_surface ? surface_spectra(mesh, *spectra_surface, reeb.vertex_node, reeb.num_nodes())
-                                  : surface_spectra(mesh, reeb.vertex_node, reeb.num_nodes());
+        spectra = spectra_surface
+                      ? surface_spectra(mesh, *spectra_surface, reeb.vertex_node, reeb.num_nodes(), spectra_options)
+                      : surface_spectra(mesh, reeb.vertex_node, reeb.num_nodes(), spectra_options);
       },
       [&] {
         sums = triangle_sums(mesh, original_vertices, f, reeb);

@@ -31,12 +31,12 @@ struct GraphAttributes {
 /// the geodesic diameter of the feature point search (`features`: its
 /// FeaturePoints::diameter, section 4.1.2; its diameter ends v_s1, v_s2 give
 /// the main axis).
-/// `spectra`, when given, is spectra_surface(mesh) (region_spectra.h),
-/// prepared beforehand; otherwise it is prepared here.
+/// `spectra`, when given, is spectra_surface(mesh, spectra_options)
+/// (region_spectra.h), prepared beforehand; otherwise it is prepared here.
 /// \pre reeb has nodes, and mesh, graph, fq and reeb.vertex_node agree in
 ///      vertex count; throws InvalidArgument otherwise.
 GraphAttributes compute_attributes(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& fq,
                                    const FeaturePoints& features, const ReebGraph& reeb,
-                                   const SpectraSurface* spectra = nullptr);
+                                   const SpectraSurface* spectra = nullptr, const SpectraOptions& spectra_options = {});
 
 }  // namespace reebkit

@@ -32,7 +32,11 @@ const std::array<const char*, kSignatureLength> kSignatureNames = {
     "axis_offset_0", "axis_offset_1", "axis_offset_2", "axis_offset_3",
     "axis_offset_4", "axis_offset_5", "axis_offset_6", "axis_offset_7",
     "dna_1", "dna_2", "dna_3", "dna_4", "dna_5", "dna_6", "dna_7", "dna_8",
-    "dna_9", "dna_10", "dna_11", "dna_12", "dna_13", "dna_14", "dna_15", "dna_16"};
+    "dna_9", "dna_10", "dna_11", "dna_12", "dna_13", "dna_14", "dna_15", "dna_16",
+    "heat_t1_1", "heat_t1_2", "heat_t1_3", "heat_t1_4", "heat_t1_5", "heat_t1_6", "heat_t1_7", "heat_t1_8",
+    "heat_t2_1", "heat_t2_2", "heat_t2_3", "heat_t2_4", "heat_t2_5", "heat_t2_6", "heat_t2_7", "heat_t2_8",
+    "heat_t3_1", "heat_t3_2", "heat_t3_3", "heat_t3_4", "heat_t3_5", "heat_t3_6", "heat_t3_7", "heat_t3_8",
+    "heat_t4_1", "heat_t4_2", "heat_t4_3", "heat_t4_4", "heat_t4_5", "heat_t4_6", "heat_t4_7", "heat_t4_8"};
 // clang-format on
 
 std::int64_t independent_cycles(const GraphRecord& record) {

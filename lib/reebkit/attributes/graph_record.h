@@ -87,9 +87,18 @@ inline constexpr int kSigGlobalGeodesic = kSigGlobalShape + kGlobalShapeBins;
 /// Invariant to bending.
 inline constexpr int kGlobalSpectrumLength = 16;
 inline constexpr int kSigGlobalSpectrum = kSigGlobalGeodesic + kGlobalShapeBins;
+/// The last kGlobalHeatLength entries: the distribution of the heat kernel
+/// signature over the whole surface (mesh/heat_kernel.h), HKS(x, t) / Z(t)
+/// at each of kGlobalHeatTimes times (0.01, 0.03, 0.1, 0.3 x area), given by
+/// kGlobalHeatQuantiles area-weighted quantiles, each quantile r as
+/// r / (1 + r). Invariant to bending.
+inline constexpr int kGlobalHeatTimes = 4;
+inline constexpr int kGlobalHeatQuantiles = 8;
+inline constexpr int kGlobalHeatLength = kGlobalHeatTimes * kGlobalHeatQuantiles;
+inline constexpr int kSigGlobalHeat = kSigGlobalSpectrum + kGlobalSpectrumLength;
 /// Length of the per-graph signature vector used for nearest-neighbour
 /// pre-filtering (FLANN): fixed whatever the graph, every entry in [0, 1].
-inline constexpr int kSignatureLength = kSigGlobalSpectrum + kGlobalSpectrumLength;
+inline constexpr int kSignatureLength = kSigGlobalHeat + kGlobalHeatLength;
 /// Name of each signature entry.
 extern const std::array<const char*, kSignatureLength> kSignatureNames;
 

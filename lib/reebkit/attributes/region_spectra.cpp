@@ -2,6 +2,7 @@
 
 #include "reebkit/core/error.h"
 #include "reebkit/mesh/decimation.h"
+#include "reebkit/mesh/heat_kernel.h"
 #include "reebkit/mesh/mesh_topology.h"
 #include "reebkit/mesh/shape_dna.h"
 #include "reebkit/mesh/transform.h"
@@ -9,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <stdexcept>
 #include <string>
 
 namespace reebkit {
@@ -128,16 +130,24 @@ Mesh coarsened(const Mesh& piece, double ratio) { return decimated_or_whole(piec
 /// `axis_gap`).
 std::vector<double> global_spectrum(const Mesh& surface, double axis_gap, const SpectraOptions& options) {
   const Mesh global_copy = coarsened(surface, coarse_ratio(surface, axis_gap, options.global_vertices, options));
-  std::vector<double> out(at(kGlobalSpectrumLength), 0.0);
+  std::vector<double> out(at(kGlobalSpectrumLength + kGlobalHeatLength), 0.0);
   ShapeDnaOptions global;
   global.eigenvalues = kGlobalSpectrumLength;
   global.margin = 4;
+  global.eigenvectors = true;
+  const HeatKernelOptions heat;
+  if (heat.times.size() * at(heat.quantiles) != at(kGlobalHeatLength))
+    throw std::logic_error("global_spectrum: HeatKernelOptions does not give kGlobalHeatLength values");
   // The global copy; where the operator or the iterations cannot take it,
   // the surface itself; where they cannot take that either (a handful of
   // vertices), zeros, as for a region too small.
   for (const Mesh* m : {&global_copy, &surface}) {
     try {
-      squash(shape_dna(*m, global), kGlobalSpectrumLength, out.data());
+      const ShapeDna dna = shape_dna(*m, global);
+      squash(dna, kGlobalSpectrumLength, out.data());
+      const std::vector<double> quantiles = heat_kernel_quantiles(dna, heat);
+      for (std::size_t i = 0; i < quantiles.size(); ++i)
+        out[at(kGlobalSpectrumLength) + i] = 1.0 / (1.0 + std::exp(-quantiles[i]));  // r / (1 + r), r = e^q
       break;
     } catch (const InvalidMeshError&) {
     }
@@ -183,7 +193,8 @@ SurfaceSpectra surface_spectra(const Mesh& mesh, const SpectraSurface& prepared,
   if (vertex_region.size() != at(mesh.num_vertices()))
     throw InvalidArgument("surface_spectra: " + where + ": " + std::to_string(vertex_region.size()) +
                           " region labels for " + std::to_string(mesh.num_vertices()) + " vertices");
-  if (prepared.input_vertices != mesh.num_vertices() || prepared.global.size() != at(kGlobalSpectrumLength))
+  if (prepared.input_vertices != mesh.num_vertices() ||
+      prepared.global.size() != at(kGlobalSpectrumLength + kGlobalHeatLength))
     throw InvalidArgument("surface_spectra: " + where + ": a spectra surface of a mesh of " +
                           std::to_string(prepared.input_vertices) + " vertices for one of " +
                           std::to_string(mesh.num_vertices()) + ", or not made by spectra_surface");
@@ -225,7 +236,7 @@ SurfaceSpectra surface_spectra(const Mesh& mesh, const SpectraSurface& prepared,
   ShapeDnaOptions local;
   local.eigenvalues = n;
   local.margin = 2;  // a part of a shape has no symmetry to make its eigenvalues multiple
-  for (Index r = 0; r < regions; ++r) {
+  for (Index r = 0; r < regions && options.regions; ++r) {
     if (!(region_area[at(r)] >= options.min_region_area * total_area) || region_area[at(r)] == 0.0) continue;
     // Cut from the surface before its decimation, then coarsened at the regions' ratio: a
     // border cut from the coarse copy would zig-zag with the collapses.

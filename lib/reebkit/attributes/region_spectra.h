@@ -70,6 +70,12 @@ struct SpectraOptions {
   /// than an edge of their coarse copies (the whole surface's spectrum is
   /// then computed on it when global_vertices is larger). >= coarse_vertices.
   Index fine_vertices = 120000;
+  /// Compute the regions' spectra (SurfaceSpectra::region). Off by default:
+  /// the default matching cost does not compare them (its r term has weight
+  /// 0, results/matching_weights.md), and they are about a tenth of the
+  /// time of `reeb index`; off, they are zeros. The whole surface's values
+  /// are always computed.
+  bool regions = false;
 };
 
 /// The surface the spectra are computed on: the canonical copy of a mesh
@@ -85,8 +91,8 @@ struct SpectraSurface {
   Index input_vertices = 0;
   /// CanonicalCopy::axis_gap of the input.
   double axis_gap = 0.0;
-  /// SurfaceSpectra::global: the whole surface's spectrum needs no regions,
-  /// so it is computed with the surface, while the graph is built.
+  /// SurfaceSpectra::global: the whole surface's values need no regions,
+  /// so they are computed with the surface, while the graph is built.
   std::vector<double> global;
   /// `mesh` is a decimation of the canonical copy (not the copy itself).
   bool decimated() const { return mesh.num_vertices() < input_vertices; }
@@ -97,11 +103,16 @@ struct SpectraSurface {
 SpectraSurface spectra_surface(const Mesh& mesh, const SpectraOptions& options = {});
 
 struct SurfaceSpectra {
-  /// kGlobalSpectrumLength values s / (1 + s), s = lambda_k x area / (4 pi k),
-  /// k = 1 .. kGlobalSpectrumLength (the zero eigenvalue left out).
+  /// The whole surface's entries of the signature from kSigGlobalSpectrum:
+  /// its spectrum, kGlobalSpectrumLength values s / (1 + s), s = lambda_k x
+  /// area / (4 pi k), k = 1 .. kGlobalSpectrumLength (the zero eigenvalue
+  /// left out), then the distribution of its heat kernel signature,
+  /// kGlobalHeatLength values r / (1 + r) of the quantiles r of HKS / Z
+  /// (mesh/heat_kernel.h, default options), from the same eigenpairs.
   std::vector<double> global;
   /// #regions x kRegionSpectrumLength, row-major: the same for each
-  /// region (its own area, its Neumann spectrum); zeros for a region below
+  /// region (its own area, its Neumann spectrum); zeros without
+  /// SpectraOptions::regions, for a region below
   /// min_region_area, or left with fewer than kRegionSpectrumLength + 2
   /// vertices on the coarse copy.
   std::vector<double> region;

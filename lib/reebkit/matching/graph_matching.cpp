@@ -202,12 +202,22 @@ double global_spectrum_term(const MatchableGraph& a, const MatchableGraph& b, co
   return o.global_spectrum_weight * d / (d + o.global_spectrum_scale);
 }
 
+/// g_h(A, B) of MatchingOptions: the mean absolute difference d of the heat
+/// kernel quantiles, saturated as d / (d + global_heat_scale).
+double global_heat_term(const MatchableGraph& a, const MatchableGraph& b, const MatchingOptions& o) {
+  if (o.global_heat_weight == 0.0) return 0.0;
+  double sum = 0.0;
+  for (std::size_t k = 0; k < a.global_heat.size(); ++k) sum += std::abs(a.global_heat[k] - b.global_heat[k]);
+  const double d = sum / static_cast<double>(a.global_heat.size());
+  return o.global_heat_weight * d / (d + o.global_heat_scale);
+}
+
 /// global_shape_weight * g(A, B) + global_geodesic_weight * g_g(A, B) +
-/// global_spectrum_weight * g_s(A, B).
+/// global_spectrum_weight * g_s(A, B) + global_heat_weight * g_h(A, B).
 double global_shape_term(const MatchableGraph& a, const MatchableGraph& b, const MatchingOptions& o) {
   return weighted_half_l1(a.global_shape, b.global_shape, o.global_shape_weight) +
          weighted_half_l1(a.global_geodesic, b.global_geodesic, o.global_geodesic_weight) +
-         global_spectrum_term(a, b, o);
+         global_spectrum_term(a, b, o) + global_heat_term(a, b, o);
 }
 
 }  // namespace
@@ -242,11 +252,16 @@ MatchableGraph make_matchable_graph(const GraphRecord& entry) {
   g.global_shape.assign(entry.signature.begin() + kSigGlobalShape, entry.signature.begin() + kSigGlobalGeodesic);
   g.global_geodesic.assign(entry.signature.begin() + kSigGlobalGeodesic, entry.signature.begin() + kSigGlobalSpectrum);
   // The signature's y = s / (1 + s) back to ln s = ln(y / (1 - y)).
-  g.global_spectrum.resize(static_cast<std::size_t>(kGlobalSpectrumLength));
-  for (std::size_t k = 0; k < g.global_spectrum.size(); ++k) {
-    const double y = std::clamp(entry.signature[static_cast<std::size_t>(kSigGlobalSpectrum) + k], 1e-12, 1.0 - 1e-12);
-    g.global_spectrum[k] = std::log(y / (1.0 - y));
-  }
+  const auto unsquashed = [&](int from, int count) {
+    std::vector<double> out(static_cast<std::size_t>(count));
+    for (std::size_t k = 0; k < out.size(); ++k) {
+      const double y = std::clamp(entry.signature[static_cast<std::size_t>(from) + k], 1e-12, 1.0 - 1e-12);
+      out[k] = std::log(y / (1.0 - y));
+    }
+    return out;
+  };
+  g.global_spectrum = unsquashed(kSigGlobalSpectrum, kGlobalSpectrumLength);
+  g.global_heat = unsquashed(kSigGlobalHeat, kGlobalHeatLength);
   const auto attribute = [&](std::size_t i, NodeAttribute c) {
     return entry.node_attributes[i * kNodeAttributeCount + c];
   };

@@ -23,7 +23,7 @@ namespace reebkit {
 /// of the cheapest correspondence over (W_A + W_B), W = sum of the weights,
 /// in [0, unmatched_cost], and the distance adds global_shape_weight * g(A,
 /// B) + global_geodesic_weight * g_g(A, B) + global_spectrum_weight * g_s(A,
-/// B). All terms are in [0, 1]:
+/// B) + global_heat_weight * g_h(A, B). All terms are in [0, 1]:
 /// - a: mean absolute difference of sqrt(relative area), f_q min, f_q max,
 ///   geodesic extent and mean radius (attributes/graph_attributes.h);
 /// - s: mean of the relative degree difference |d_i - d_j| / max(d_i, d_j),
@@ -50,23 +50,27 @@ namespace reebkit {
 ///   bending): relative differences, so that each eigenvalue counts alike,
 ///   and saturating, so that the spectrum ranks the shapes whose spectra are
 ///   near (two people, one body in two poses) while the graph ranks the
-///   others (two classes differ in both; the graph tells which are nearer).
+///   others (two classes differ in both; the graph tells which are nearer);
+/// - g_h: d / (d + global_heat_scale), d the mean absolute difference of the
+///   quantiles of ln(HKS / Z) of the whole surfaces (signature entries from
+///   kSigGlobalHeat, mesh/heat_kernel.h: how heat spreads over the surface,
+///   from its tips to its parts; invariant to bending), saturating as g_s.
 /// Defaults: every term intrinsic (unchanged when the surface bends), the
 /// Euclidean ones h and g off, and h_g off too; the weights chosen on
 /// SHREC07 and the two body-shape benchmarks together, the demo's variants
 /// as guard, and reported on the TOSCA collections and SHREC07 re-posed
 /// (results/matching_weights.md).
 struct MatchingOptions {
-  double attribute_weight = 8.0;         ///< weight of a(i, j)
-  double structure_weight = 1.0;         ///< weight of s(i, j)
-  double edge_weight = 0.25;             ///< weight of e(i, j)
-  double profile_weight = 16.0;          ///< weight of p(i, j)
-  double shape_weight = 0.0;             ///< weight of h(i, j): Euclidean, follows the pose
-  double geodesic_shape_weight = 0.0;    ///< weight of h_g(i, j)
-  double global_shape_weight = 0.0;      ///< weight of g(A, B): Euclidean, follows the pose
-  double global_geodesic_weight = 0.8;   ///< weight of g_g(A, B)
-  double spectrum_weight = 8.0;          ///< weight of r(i, j)
-  double global_spectrum_weight = 16.0;  ///< weight of g_s(A, B)
+  double attribute_weight = 4.0;        ///< weight of a(i, j)
+  double structure_weight = 1.0;        ///< weight of s(i, j)
+  double edge_weight = 0.25;            ///< weight of e(i, j)
+  double profile_weight = 16.0;         ///< weight of p(i, j)
+  double shape_weight = 0.0;            ///< weight of h(i, j): Euclidean, follows the pose
+  double geodesic_shape_weight = 0.0;   ///< weight of h_g(i, j)
+  double global_shape_weight = 0.0;     ///< weight of g(A, B): Euclidean, follows the pose
+  double global_geodesic_weight = 0.8;  ///< weight of g_g(A, B)
+  double spectrum_weight = 0.0;         ///< weight of r(i, j)
+  double global_spectrum_weight = 4.0;  ///< weight of g_s(A, B)
   /// How many of the kGlobalSpectrumLength eigenvalues g_s compares (the
   /// lowest), in [1, kGlobalSpectrumLength]: the first ones carry the
   /// proportions of a shape, the later ones more of its details and of its
@@ -74,7 +78,10 @@ struct MatchingOptions {
   int global_spectrum_eigenvalues = 12;
   /// The root mean square log ratio d at which g_s is 1/2; > 0.
   double global_spectrum_scale = 0.005;
-  double unmatched_cost = 1.5;    ///< cost of deleting or inserting a node, per unit of node weight
+  double global_heat_weight = 4.0;  ///< weight of g_h(A, B)
+  /// The mean quantile difference d at which g_h is 1/2; > 0.
+  double global_heat_scale = 0.01;
+  double unmatched_cost = 1.0;    ///< cost of deleting or inserting a node, per unit of node weight
   double min_node_weight = 0.05;  ///< added to the relative area so that area-less nodes still count
   /// Rounds of edge-consistency refinement: the assignment is solved again
   /// with e(i, j) from the previous correspondence (the first solve has e =
@@ -126,6 +133,9 @@ struct MatchableGraph {
   /// zeros of a spectrum that could not be computed give ln(1e-12), far from
   /// any spectrum but that of another such surface.
   std::vector<double> global_spectrum;
+  /// kGlobalHeatLength: the quantiles of ln(HKS / Z) of the whole surface
+  /// (from the signature's squashed values, as the spectrum's).
+  std::vector<double> global_heat;
 };
 
 /// The matchable form of an entry's graph.

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -41,18 +42,45 @@ class InvertedPencil {
   Eigen::Index cols() const { return mass_.rows(); }
 
   /// y = C^-1 P M P^T C^-T x, by the two triangular solves on the factor's
-  /// own arrays: Eigen's solve with C^T is a chain of dependent additions per
-  /// column, which four partial sums break up (the solves are most of the
-  /// time Lanczos takes).
+  /// own arrays (the solves are most of the time Lanczos takes).
   void perform_op(const double* x, double* y) const {
-    const auto& c = cholesky_.matrixL().nestedExpression();  // C by columns, each its diagonal first
+    const auto n = static_cast<int>(rows());
+    work_ = Eigen::Map<const Eigen::VectorXd>(x, n);
+    solve_transposed(work_.data());
+    Eigen::Map<Eigen::VectorXd> out(y, n);
+    out.noalias() = mass_ * work_;
+    const auto& c = factor();
     const int* start = c.outerIndexPtr();
     const int* row = c.innerIndexPtr();
     const double* value = c.valuePtr();
-    const auto n = static_cast<int>(rows());
-    work_ = Eigen::Map<const Eigen::VectorXd>(x, n);
-    double* w = work_.data();
-    for (int j = n - 1; j >= 0; --j) {  // C^T w = x: row j of C^T is column j of C
+    for (int j = 0; j < n; ++j) {  // C out = P M P^T w
+      const double t = y[j] /= value[start[j]];
+      for (int k = start[j] + 1; k < start[j + 1]; ++k) y[row[k]] -= value[k] * t;
+    }
+  }
+
+  /// The eigenfunction phi = P^T C^-T y of the pencil for an eigenvector y
+  /// of this operator (S y = mu y gives M phi = mu (L - shift M) phi),
+  /// scaled to phi^T M phi = 1.
+  Eigen::VectorXd eigenfunction(const Eigen::VectorXd& y) const {
+    Eigen::VectorXd w = y;
+    solve_transposed(w.data());
+    w /= std::sqrt(w.dot(mass_ * w));
+    return cholesky_.permutationPinv() * w;
+  }
+
+ private:
+  /// C by columns, each its diagonal first.
+  const Eigen::SparseMatrix<double>& factor() const { return cholesky_.matrixL().nestedExpression(); }
+
+  /// w = C^-T w: row j of C^T is column j of C. Eigen's solve with C^T is a
+  /// chain of dependent additions per column, which four partial sums break up.
+  void solve_transposed(double* w) const {
+    const auto& c = factor();
+    const int* start = c.outerIndexPtr();
+    const int* row = c.innerIndexPtr();
+    const double* value = c.valuePtr();
+    for (auto j = static_cast<int>(rows()) - 1; j >= 0; --j) {
       double sum[4] = {0.0, 0.0, 0.0, 0.0};
       int k = start[j] + 1;
       for (; k + 4 <= start[j + 1]; k += 4)
@@ -60,15 +88,8 @@ class InvertedPencil {
       for (; k < start[j + 1]; ++k) sum[0] += value[k] * w[row[k]];
       w[j] = (w[j] - ((sum[0] + sum[1]) + (sum[2] + sum[3]))) / value[start[j]];
     }
-    Eigen::Map<Eigen::VectorXd> out(y, n);
-    out.noalias() = mass_ * work_;
-    for (int j = 0; j < n; ++j) {  // C out = P M P^T w
-      const double t = y[j] /= value[start[j]];
-      for (int k = start[j] + 1; k < start[j + 1]; ++k) y[row[k]] -= value[k] * t;
-    }
   }
 
- private:
   Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> cholesky_;
   Eigen::SparseMatrix<double> mass_;  ///< P M P^T
   mutable Eigen::VectorXd work_;
@@ -108,6 +129,14 @@ ShapeDna shape_dna(const Mesh& mesh, const ShapeDnaOptions& options) {
     throw InvalidMeshError(source, "the Laplace-Beltrami eigenvalue iterations did not converge");
   const Eigen::VectorXd inverted = solver.eigenvalues();
   for (Eigen::Index k = 1; k < wanted; ++k) result.eigenvalues.push_back(options.shift + 1.0 / inverted(k));
+  result.next_eigenvalue =
+      computed > wanted ? options.shift + 1.0 / inverted(wanted) : std::numeric_limits<double>::infinity();
+  if (options.eigenvectors) {
+    const Eigen::MatrixXd ritz = solver.eigenvectors(wanted);
+    result.eigenvectors.resize(n, wanted);
+    for (Eigen::Index k = 0; k < wanted; ++k) result.eigenvectors.col(k) = op.eigenfunction(ritz.col(k));
+    result.vertex_area = operators.mass * Eigen::VectorXd::Ones(n);
+  }
   return result;
 }
 

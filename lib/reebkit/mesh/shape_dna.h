@@ -17,6 +17,8 @@
 
 #include "reebkit/mesh/laplace_beltrami.h"
 
+#include <Eigen/Dense>
+
 #include <vector>
 
 namespace reebkit {
@@ -45,6 +47,9 @@ struct ShapeDnaOptions {
   /// copies one after another); -1: max(10, eigenvalues / 5). Fewer are
   /// cheaper where multiplicities are not expected (parts of a shape).
   int margin = -1;
+  /// Also return the eigenfunctions (ShapeDna::eigenvectors, vertex_area),
+  /// for the heat kernel (mesh/heat_kernel.h).
+  bool eigenvectors = false;
 };
 
 struct ShapeDna {
@@ -52,6 +57,17 @@ struct ShapeDna {
   /// without its first eigenvalue, which is 0 (the constants) on every mesh.
   std::vector<double> eigenvalues;
   double area = 0;  ///< the surface area, to get lambda_k back
+  /// lambda_{N+1} x area, the first eigenvalue computed beyond the range
+  /// (ShapeDnaOptions::margin); infinity where none was.
+  double next_eigenvalue = 0;
+  /// With ShapeDnaOptions::eigenvectors: one row per vertex with area
+  /// (LaplaceBeltrami::vertex), column k the eigenfunction of lambda_k for
+  /// k = 0 .. N (column 0 the constant), orthonormal for the mass matrix of
+  /// the surface scaled to unit area. Empty otherwise.
+  Eigen::MatrixXd eigenvectors;
+  /// With ShapeDnaOptions::eigenvectors: each of those vertices' share of
+  /// the area (its row sum of the mass matrix / area; they sum to 1).
+  Eigen::VectorXd vertex_area;
 };
 
 /// The Shape-DNA of `mesh` (one connected surface; with several components

@@ -10,6 +10,7 @@ namespace reebkit {
 
 MeshAnalysis analyze_mesh(Mesh mesh, const AnalysisOptions& options) {
   MeshAnalysis a;
+  a.spectra_options = options.spectra;
   Timer timer;
   a.mesh = std::move(mesh);
   a.graph = build_mesh_graph(a.mesh);
@@ -40,7 +41,7 @@ MeshAnalysis analyze_mesh(Mesh mesh, const AnalysisOptions& options) {
       [&] {
         if (!options.reeb_graph || !options.spectra_surface) return;
         Timer steps;
-        a.spectra = spectra_surface(a.mesh);
+        a.spectra = spectra_surface(a.mesh, options.spectra);
         a.timings.spectra_surface = steps.lap();
       });
   return a;
@@ -49,7 +50,7 @@ MeshAnalysis analyze_mesh(Mesh mesh, const AnalysisOptions& options) {
 GraphAttributes compute_attributes(const MeshAnalysis& analysis) {
   const bool prepared = analysis.spectra.mesh.num_vertices() > 0;
   return compute_attributes(analysis.mesh, analysis.graph, analysis.fq.value, analysis.features, analysis.reeb,
-                            prepared ? &analysis.spectra : nullptr);
+                            prepared ? &analysis.spectra : nullptr, analysis.spectra_options);
 }
 
 }  // namespace reebkit

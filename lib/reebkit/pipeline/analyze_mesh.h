@@ -25,6 +25,9 @@ struct AnalysisOptions {
   /// on a second thread where one is free; compute_attributes reuses them. false: the
   /// analysis is the graph alone, and compute_attributes prepares it.
   bool spectra_surface = true;
+  /// The attributes' spectra (region_spectra.h): whether the regions get
+  /// theirs, and the copies they are computed on.
+  SpectraOptions spectra;
 };
 
 /// Wall-clock milliseconds of each step (file reading excluded).
@@ -51,6 +54,7 @@ struct MeshAnalysis {
   /// (spectra_surface, region_spectra.h); empty unless options.reeb_graph and
   /// options.spectra_surface.
   SpectraSurface spectra;
+  SpectraOptions spectra_options;  ///< AnalysisOptions::spectra, for compute_attributes
   AnalysisTimings timings;
 };
 

@@ -39,7 +39,9 @@ namespace reebkit {
 /// graphs. 12: the same columns; f_q keeps the diameter ends' distance
 /// fields and measures only the other feature points' Voronoi cells
 /// (quotient_function.h), so the attributes differ where two cells meet.
-inline constexpr int kCollectionLayoutVersion = 12;
+/// 13: signature 112: the whole surface's heat kernel distribution
+/// (`heat_t*_*`, mesh/heat_kernel.h).
+inline constexpr int kCollectionLayoutVersion = 13;
 
 /// Where the file came from: file attributes, and two groups.
 struct Provenance {
