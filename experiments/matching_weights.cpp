@@ -78,6 +78,13 @@ struct Setting {
   std::function<void(Options&)> apply;
 };
 
+/// Every term's weight 0, for a setting that turns one term on alone.
+void without_terms(Options& o) {
+  o.attribute_weight = o.structure_weight = o.edge_weight = o.profile_weight = o.shape_weight = 0;
+  o.geodesic_shape_weight = o.global_shape_weight = o.global_geodesic_weight = o.spectrum_weight = 0;
+  o.global_spectrum_weight = o.global_heat_weight = 0;
+}
+
 /// The weights that differ between settings, as the tables show them.
 std::string describe(const Options& o) {
   char text[300];
@@ -272,9 +279,8 @@ int main(int argc, char** argv) {
          [](Options& o) { o.spectrum_weight = o.global_spectrum_weight = o.global_heat_weight = 0; }},
         {"global spectrum only (every other term 0)",
          [](Options& o) {
-           o.attribute_weight = o.structure_weight = o.edge_weight = o.profile_weight = o.shape_weight = 0;
-           o.geodesic_shape_weight = o.global_shape_weight = o.global_geodesic_weight = o.spectrum_weight = 0;
-           o.global_heat_weight = 0, o.global_spectrum_weight = 1;
+           without_terms(o);
+           o.global_spectrum_weight = 1;
          }},
         {"spectrum 0", [](Options& o) { o.spectrum_weight = 0; }},
         {"global spectrum: 16 eigenvalues", [](Options& o) { o.global_spectrum_eigenvalues = 16; }},
@@ -282,9 +288,8 @@ int main(int argc, char** argv) {
         {"global spectrum 0", [](Options& o) { o.global_spectrum_weight = 0; }},
         {"global heat only (every other term 0)",
          [](Options& o) {
-           o.attribute_weight = o.structure_weight = o.edge_weight = o.profile_weight = o.shape_weight = 0;
-           o.geodesic_shape_weight = o.global_shape_weight = o.global_geodesic_weight = o.spectrum_weight = 0;
-           o.global_spectrum_weight = 0, o.global_heat_weight = 1;
+           without_terms(o);
+           o.global_heat_weight = 1;
          }},
         {"global heat 0", [](Options& o) { o.global_heat_weight = 0; }},
         {"spectrum 8", [](Options& o) { o.spectrum_weight = 8; }},

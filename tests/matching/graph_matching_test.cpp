@@ -305,6 +305,20 @@ TEST(GraphMatching, GlobalTermsAreHalfTheL1DistanceOfTheWholeSurfaceHistograms) 
   }
 }
 
+/// `g` with each squashed signature value y = x / (1 + x) from `first` on,
+/// `count` of them, taken to x times factor(k) (k counted from `first`).
+template <typename Factor>
+GraphRecord with_scaled_values(const GraphRecord& g, int first, int count, Factor factor) {
+  GraphRecord out = g;
+  for (int k = 0; k < count; ++k) {
+    double& y = out.signature[static_cast<std::size_t>(first + k)];
+    EXPECT_GT(y, 0.0);
+    const double x = y / (1.0 - y) * factor(k);
+    y = x / (1.0 + x);
+  }
+  return out;
+}
+
 TEST(GraphMatching, GlobalSpectrumTermSaturatesTheLogRatioOfTheEigenvalues) {
   // The same graph with every compared eigenvalue of the whole surface
   // scaled by 2 (signature y = s / (1 + s) of s -> 2 s): d = ln 2, g_s = w d
@@ -314,13 +328,8 @@ TEST(GraphMatching, GlobalSpectrumTermSaturatesTheLogRatioOfTheEigenvalues) {
   options.global_spectrum_eigenvalues = 5;
   options.global_spectrum_scale = 0.25;
   options.global_spectrum_weight = 3.0;
-  GraphRecord b = a;
-  for (int k = 0; k < kGlobalSpectrumLength; ++k) {
-    double& y = b.signature[static_cast<std::size_t>(kSigGlobalSpectrum + k)];
-    ASSERT_GT(y, 0.0);
-    const double s = y / (1.0 - y) * (k < options.global_spectrum_eigenvalues ? 2.0 : 5.0);
-    y = s / (1.0 + s);
-  }
+  const GraphRecord b = with_scaled_values(a, kSigGlobalSpectrum, kGlobalSpectrumLength,
+                                           [&](int k) { return k < options.global_spectrum_eigenvalues ? 2.0 : 5.0; });
   const double d = std::log(2.0);
   EXPECT_NEAR(match_graphs(a, b, options).distance, 3.0 * d / (d + 0.25), 1e-9);
   EXPECT_EQ(match_graphs(a, b, options).distance, match_graphs(b, a, options).distance);
@@ -345,13 +354,7 @@ TEST(GraphMatching, GlobalHeatTermSaturatesTheMeanQuantileDifference) {
   options.global_spectrum_weight = 0.0;
   options.global_heat_weight = 3.0;
   options.global_heat_scale = 0.25;
-  GraphRecord b = a;
-  for (int k = 0; k < kGlobalHeatLength; ++k) {
-    double& y = b.signature[static_cast<std::size_t>(kSigGlobalHeat + k)];
-    ASSERT_GT(y, 0.0);
-    const double r = y / (1.0 - y) * 2.0;
-    y = r / (1.0 + r);
-  }
+  const GraphRecord b = with_scaled_values(a, kSigGlobalHeat, kGlobalHeatLength, [](int) { return 2.0; });
   const double d = std::log(2.0);
   EXPECT_NEAR(match_graphs(a, b, options).distance, 3.0 * d / (d + 0.25), 1e-9);
   EXPECT_EQ(match_graphs(a, b, options).distance, match_graphs(b, a, options).distance);

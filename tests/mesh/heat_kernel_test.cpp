@@ -30,31 +30,6 @@ double max_difference(const std::vector<double>& a, const std::vector<double>& b
   return worst;
 }
 
-// The eigenfunctions are orthonormal for the unit-area mass matrix and solve
-// L phi = lambda M phi; the first is the constant 1, and the vertex areas sum
-// to 1.
-TEST(HeatKernel, EigenfunctionsAreOrthonormalSolutionsOfThePencil) {
-  StarOptions star;
-  star.levels = 3;
-  const Mesh mesh = make_star(star);
-  const ShapeDna dna = with_eigenvectors(mesh);
-  LaplaceBeltrami lb = laplace_beltrami(mesh);
-  lb.mass /= dna.area;
-  const Eigen::MatrixXd& phi = dna.eigenvectors;
-  ASSERT_EQ(phi.cols(), 17);
-  ASSERT_EQ(phi.rows(), mesh.num_vertices());
-  const Eigen::MatrixXd gram = phi.transpose() * (lb.mass * phi);
-  EXPECT_LT((gram - Eigen::MatrixXd::Identity(17, 17)).cwiseAbs().maxCoeff(), 1e-8);
-  for (Eigen::Index k = 1; k < 17; ++k) {
-    const Eigen::VectorXd residual =
-        lb.stiffness * phi.col(k) - dna.eigenvalues[static_cast<std::size_t>(k - 1)] * (lb.mass * phi.col(k));
-    EXPECT_LT(residual.norm(), 1e-6 * dna.eigenvalues[static_cast<std::size_t>(k - 1)]) << "eigenpair " << k;
-  }
-  EXPECT_LT((phi.col(0).cwiseAbs() - Eigen::VectorXd::Ones(phi.rows())).cwiseAbs().maxCoeff(), 1e-8);
-  EXPECT_NEAR(dna.vertex_area.sum(), 1.0, 1e-12);
-  EXPECT_GT(dna.next_eigenvalue, dna.eigenvalues.back());
-}
-
 // The sum stops before a multiple eigenvalue the range cuts.
 TEST(HeatKernel, TheSumStopsBeforeAMultipletTheRangeCuts) {
   ShapeDna dna;

@@ -209,6 +209,35 @@ TEST(ShapeDna, InvariantToRigidMotionScaleAndRenumbering) {
   EXPECT_GT(shape_dna_distance(shape_dna(make_star(star)), original), 1.0);
 }
 
+// The eigenfunctions are orthonormal for the unit-area mass matrix and solve
+// L phi = lambda M phi; the first is the constant 1, and the vertex areas sum
+// to 1.
+TEST(ShapeDna, EigenfunctionsAreOrthonormalSolutionsOfThePencil) {
+  ShapeDnaOptions options;
+  options.eigenvalues = 16;
+  options.margin = 4;
+  options.eigenvectors = true;
+  StarOptions star;
+  star.levels = 3;
+  const Mesh mesh = make_star(star);
+  const ShapeDna dna = shape_dna(mesh, options);
+  LaplaceBeltrami lb = laplace_beltrami(mesh);
+  lb.mass /= dna.area;
+  const Eigen::MatrixXd& phi = dna.eigenvectors;
+  ASSERT_EQ(phi.cols(), 17);
+  ASSERT_EQ(phi.rows(), mesh.num_vertices());
+  const Eigen::MatrixXd gram = phi.transpose() * (lb.mass * phi);
+  EXPECT_LT((gram - Eigen::MatrixXd::Identity(17, 17)).cwiseAbs().maxCoeff(), 1e-8);
+  for (Eigen::Index k = 1; k < 17; ++k) {
+    const Eigen::VectorXd residual =
+        lb.stiffness * phi.col(k) - dna.eigenvalues[static_cast<std::size_t>(k - 1)] * (lb.mass * phi.col(k));
+    EXPECT_LT(residual.norm(), 1e-6 * dna.eigenvalues[static_cast<std::size_t>(k - 1)]) << "eigenpair " << k;
+  }
+  EXPECT_LT((phi.col(0).cwiseAbs() - Eigen::VectorXd::Ones(phi.rows())).cwiseAbs().maxCoeff(), 1e-8);
+  EXPECT_NEAR(dna.vertex_area.sum(), 1.0, 1e-12);
+  EXPECT_GT(dna.next_eigenvalue, dna.eigenvalues.back());
+}
+
 // The distance is the Euclidean distance of lambda_k area / k over the
 // common length.
 TEST(ShapeDna, DistanceWeighsEachEigenvalueByItsIndex) {

@@ -56,10 +56,11 @@ namespace reebkit {
 ///   kSigGlobalHeat, mesh/heat_kernel.h: how heat spreads over the surface,
 ///   from its tips to its parts; invariant to bending), saturating as g_s.
 /// Defaults: every term intrinsic (unchanged when the surface bends), the
-/// Euclidean ones h and g off, and h_g off too; the weights chosen on
-/// SHREC07 and the two body-shape benchmarks together, the demo's variants
-/// as guard, and reported on the TOSCA collections and SHREC07 re-posed
-/// (results/matching_weights.md).
+/// Euclidean ones h and g off, h_g and r off too (r needs the analysis
+/// option region_spectra); the weights chosen on SHREC07 and the two
+/// body-shape benchmarks together, among the settings that meet issue 21's
+/// aims on SHREC07, the demo's variants as guard, and reported on the TOSCA
+/// collections, SHREC07 re-posed and the animals (results/matching_weights.md).
 struct MatchingOptions {
   double attribute_weight = 4.0;        ///< weight of a(i, j)
   double structure_weight = 1.0;        ///< weight of s(i, j)
