@@ -17,6 +17,40 @@ int whole_eigenspaces(const ShapeDna& dna, double multiplet_gap) {
   return count + 1;
 }
 
+namespace {
+
+/// The area-weighted quantiles at the levels (q + 1/2) / count of
+/// `values` (value, area), sorted here, appended to `out`. Value i stands
+/// for the area around its midpoint (the area below it plus half its own);
+/// a quantile is interpolated linearly between the two values whose
+/// midpoints enclose its level.
+void append_weighted_quantiles(std::vector<std::pair<double, double>>& values, int count, std::vector<double>& out) {
+  std::sort(values.begin(), values.end());
+  double total = 0.0;
+  for (const auto& [value, area] : values) total += area;
+  double below = 0.0, previous_mid = 0.0;
+  std::size_t i = 0;
+  for (int q = 0; q < count; ++q) {
+    const double level = (q + 0.5) / count * total;
+    while (i < values.size() && below + values[i].second / 2 < level) {
+      previous_mid = below + values[i].second / 2;
+      below += values[i].second;
+      ++i;
+    }
+    if (i == 0) {
+      out.push_back(values.front().first);
+    } else if (i == values.size()) {
+      out.push_back(values.back().first);
+    } else {
+      const double mid = below + values[i].second / 2;
+      const double a = mid > previous_mid ? (level - previous_mid) / (mid - previous_mid) : 1.0;
+      out.push_back(values[i - 1].first + a * (values[i].first - values[i - 1].first));
+    }
+  }
+}
+
+}  // namespace
+
 std::vector<double> heat_kernel_quantiles(const ShapeDna& dna, const HeatKernelOptions& options) {
   if (dna.eigenvectors.cols() != static_cast<Eigen::Index>(dna.eigenvalues.size()) + 1 ||
       dna.vertex_area.size() != dna.eigenvectors.rows())
@@ -37,31 +71,7 @@ std::vector<double> heat_kernel_quantiles(const ShapeDna& dna, const HeatKernelO
     const double z = decay.sum();
     for (Eigen::Index v = 0; v < n; ++v)
       values[static_cast<std::size_t>(v)] = {std::log(std::max(hks(v), 1e-300) / z), dna.vertex_area(v)};
-    std::sort(values.begin(), values.end());
-    // Value v_i stands for the area around its midpoint c_i (the area below
-    // it plus half its own); the quantile at level p is interpolated
-    // linearly between the two values whose midpoints enclose p.
-    double below = 0.0, total = 0.0;
-    for (const auto& [value, area] : values) total += area;
-    std::size_t i = 0;
-    double previous_mid = 0.0;
-    for (int q = 0; q < options.quantiles; ++q) {
-      const double level = (q + 0.5) / options.quantiles * total;
-      while (i < values.size() && below + values[i].second / 2 < level) {
-        previous_mid = below + values[i].second / 2;
-        below += values[i].second;
-        ++i;
-      }
-      if (i == 0) {
-        out.push_back(values.front().first);
-      } else if (i == values.size()) {
-        out.push_back(values.back().first);
-      } else {
-        const double mid = below + values[i].second / 2;
-        const double a = mid > previous_mid ? (level - previous_mid) / (mid - previous_mid) : 1.0;
-        out.push_back(values[i - 1].first + a * (values[i].first - values[i - 1].first));
-      }
-    }
+    append_weighted_quantiles(values, options.quantiles, out);
   }
   return out;
 }
