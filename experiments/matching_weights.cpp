@@ -346,14 +346,15 @@ int main(int argc, char** argv) {
                     " settings that keep NN and FT on " + guard->name + " at least at the current defaults' (" +
                     std::to_string(floor->nn).substr(0, 5) + ", " + std::to_string(floor->ft).substr(0, 5) + ")"
               : "";
+    std::string aims_text;
     for (const Aim& aim : aims) {
       char text[200];
-      std::snprintf(text, sizeof text, "%s NN, FT and DCG at least %g, %g, %g", aim.name.c_str(), aim.floor.nn,
-                    aim.floor.ft, aim.floor.dcg);
-      guard_text += (&aim == &aims.front() ? (first.aimed ? ", meeting the aims (" : ", no setting meeting the aims (")
-                                           : std::string("; ")) +
-                    text + (&aim == &aims.back() ? ")" : "");
+      std::snprintf(text, sizeof text, "%s%s NN, FT and DCG at least %g, %g, %g", aims_text.empty() ? "" : "; ",
+                    aim.name.c_str(), aim.floor.nn, aim.floor.ft, aim.floor.dcg);
+      aims_text += text;
     }
+    if (!aims.empty())
+      guard_text += (first.aimed ? ", meeting the aims (" : ", no setting meeting the aims (") + aims_text + ")";
 
     std::printf(
         "\n## Grid and the choice\n\n%zu settings (spectrum 0, 4, 8 x global spectrum 4, 8, 16 at 12 "

@@ -203,6 +203,11 @@ SurfaceSpectra surface_spectra(const Mesh& mesh, const SpectraSurface& prepared,
       throw InvalidArgument("surface_spectra: " + where + ": region label " + std::to_string(r) + " outside [0, " +
                             std::to_string(regions) + ")");
   check_options(options);
+  const int n = kRegionSpectrumLength;
+  SurfaceSpectra out;
+  out.global = prepared.global;
+  out.region.assign(at(regions) * at(n), 0.0);
+  if (!options.regions) return out;
   const Mesh& surface = prepared.mesh;
   // Each region's triangles (those with at least two corners in it) and its
   // share of the area, counted on the surface before any decimation, so that
@@ -227,16 +232,11 @@ SurfaceSpectra surface_spectra(const Mesh& mesh, const SpectraSurface& prepared,
   }
 
   const double region_ratio = coarse_ratio(surface, prepared.axis_gap, options.coarse_vertices, options);
-  SurfaceSpectra out;
-  out.global = prepared.global;
-
-  const int n = kRegionSpectrumLength;
-  out.region.assign(at(regions) * at(n), 0.0);
   std::vector<Index> renumber(at(surface.num_vertices()), kInvalidIndex);
   ShapeDnaOptions local;
   local.eigenvalues = n;
   local.margin = 2;  // a part of a shape has no symmetry to make its eigenvalues multiple
-  for (Index r = 0; r < regions && options.regions; ++r) {
+  for (Index r = 0; r < regions; ++r) {
     if (!(region_area[at(r)] >= options.min_region_area * total_area) || region_area[at(r)] == 0.0) continue;
     // Cut from the surface before its decimation, then coarsened at the regions' ratio: a
     // border cut from the coarse copy would zig-zag with the collapses.
