@@ -600,7 +600,8 @@ TEST(GraphAttributes, RequiresTheReebGraph) {
 
 // The spectra see a limb's proportions, not its pose: turning an arm of the
 // star by 60 degrees (deform_component) moves the arm's region spectrum by
-// less than a third, and the whole surface's by less than half, of what
+// less than a third, the whole surface's spectrum by less than half and its
+// heat kernel distribution by less than two thirds, of what
 // making the arm 10 % longer does (plan_proportions: scale 1.1, thickness
 // 1 / 1.1, so no thicker; the bend is not quite an isometry: its ramp
 // stretches the joint), and the matcher with its default cost puts the bent
@@ -643,9 +644,12 @@ TEST(GraphAttributes, SpectraIgnoreABendAndSeeALongerArm) {
   EXPECT_GT(change(longer_spectra, &Spectra::arm), 0.01);
   EXPECT_LT(3 * change(bent_spectra, &Spectra::arm), change(longer_spectra, &Spectra::arm));
   EXPECT_LT(2 * change(bent_spectra, &Spectra::whole), change(longer_spectra, &Spectra::whole));
-  EXPECT_LT(change(bent_spectra, &Spectra::heat), 0.005);  // the bend's short ramp stretches a little
-  EXPECT_GT(change(longer_spectra, &Spectra::heat), 0.005);
-  EXPECT_LT(2 * change(bent_spectra, &Spectra::heat), change(longer_spectra, &Spectra::heat));
+  // The heat kernel distribution, on the intrinsic Delaunay triangulation
+  // (layout 14): 0.0025 bent, 0.0047 longer (0.002 and 0.008 on the star's
+  // own triangles, whose shapes the lengthening also changes).
+  EXPECT_LT(change(bent_spectra, &Spectra::heat), 0.004);  // the bend's short ramp stretches a little
+  EXPECT_GT(change(longer_spectra, &Spectra::heat), 0.004);
+  EXPECT_LT(1.5 * change(bent_spectra, &Spectra::heat), change(longer_spectra, &Spectra::heat));
 
   const GraphRecord star = make_graph_record(a, compute_attributes(a));
   const double to_bent = match_graphs(star, make_graph_record(bent, compute_attributes(bent))).distance;

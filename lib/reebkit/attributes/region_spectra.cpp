@@ -135,6 +135,7 @@ std::vector<double> global_spectrum(const Mesh& surface, double axis_gap, const 
   global.eigenvalues = kGlobalSpectrumLength;
   global.margin = 4;
   global.eigenvectors = true;
+  global.intrinsic_delaunay = true;  // the coarse copy's slivers, ShapeDnaOptions::intrinsic_delaunay
   const HeatKernelOptions heat;
   if (heat.times.size() * at(heat.quantiles) != at(kGlobalHeatLength))
     throw std::logic_error("global_spectrum: HeatKernelOptions does not give kGlobalHeatLength values");
@@ -235,7 +236,8 @@ SurfaceSpectra surface_spectra(const Mesh& mesh, const SpectraSurface& prepared,
   std::vector<Index> renumber(at(surface.num_vertices()), kInvalidIndex);
   ShapeDnaOptions local;
   local.eigenvalues = n;
-  local.margin = 2;  // a part of a shape has no symmetry to make its eigenvalues multiple
+  local.margin = 2;                 // a part of a shape has no symmetry to make its eigenvalues multiple
+  local.intrinsic_delaunay = true;  // as the whole surface's
   for (Index r = 0; r < regions; ++r) {
     if (!(region_area[at(r)] >= options.min_region_area * total_area) || region_area[at(r)] == 0.0) continue;
     // Cut from the surface before its decimation, then coarsened at the regions' ratio: a

@@ -1,6 +1,7 @@
 #include "reebkit/mesh/laplace_beltrami.h"
 
 #include "reebkit/core/error.h"
+#include "reebkit/mesh/intrinsic_delaunay.h"
 
 #include <algorithm>
 #include <array>
@@ -83,23 +84,38 @@ Eigen::SparseMatrix<double> matrix(const Pattern& p, const std::vector<double>& 
                                                        p.inner.data(), values.data());
 }
 
-}  // namespace
+/// Whether a triangle spans surface, to rounding: twice its area above 1e-12
+/// of its longest side squared. Otherwise its cotangents are undefined.
+bool has_area(double twice_area, double longest_squared) { return twice_area > 1e-12 * longest_squared; }
 
-LaplaceBeltrami laplace_beltrami(const Mesh& mesh, const LaplaceBeltramiOptions& options) {
-  const std::string source = mesh.source.empty() ? "mesh" : mesh.source;
-  if (mesh.num_triangles() == 0) throw InvalidMeshError(source, "no triangle: no Laplace-Beltrami operator");
-  // The triangles with area, their vertices renumbered to the rows.
+/// The elements of the mesh's own triangles, or of its intrinsic Delaunay
+/// triangulation, that have area.
+std::vector<Element> elements_of(const Mesh& mesh, bool intrinsic) {
   std::vector<Element> elements;
   elements.reserve(static_cast<std::size_t>(mesh.num_triangles()));
-  std::vector<Index> row(static_cast<std::size_t>(mesh.num_vertices()), kInvalidIndex);
-  for (Index t = 0; t < mesh.num_triangles(); ++t) {
-    Element e;
-    e.v = {mesh.triangles(t, 0), mesh.triangles(t, 1), mesh.triangles(t, 2)};
+  Element e;
+  if (intrinsic) {
+    const IntrinsicTriangulation t = intrinsic_delaunay(mesh);
+    for (Index f = 0; f < t.triangles.rows(); ++f) {
+      std::array<double, 3> l2;  // squared side lengths, l2[k] opposite corner k
+      for (int k = 0; k < 3; ++k) l2[static_cast<std::size_t>(k)] = t.lengths(f, k) * t.lengths(f, k);
+      const double twice_area = intrinsic_twice_area(t.lengths(f, 0), t.lengths(f, 1), t.lengths(f, 2));
+      if (!has_area(twice_area, std::max({l2[0], l2[1], l2[2]}))) continue;
+      e.v = {t.triangles(f, 0), t.triangles(f, 1), t.triangles(f, 2)};
+      for (std::size_t k = 0; k < 3; ++k)  // the law of cosines: cot = (b^2 + c^2 - a^2) / (4 area)
+        e.half_cot[k] = (l2[(k + 1) % 3] + l2[(k + 2) % 3] - l2[k]) / (4 * twice_area);
+      e.area = 0.5 * twice_area;
+      elements.push_back(e);
+    }
+    return elements;
+  }
+  for (Index f = 0; f < mesh.num_triangles(); ++f) {
+    e.v = {mesh.triangles(f, 0), mesh.triangles(f, 1), mesh.triangles(f, 2)};
     const Vec3 p[3] = {mesh.vertices.row(e.v[0]), mesh.vertices.row(e.v[1]), mesh.vertices.row(e.v[2])};
     const double twice_area = (p[1] - p[0]).cross(p[2] - p[0]).norm();
-    const double longest =
-        std::max({(p[1] - p[0]).squaredNorm(), (p[2] - p[1]).squaredNorm(), (p[0] - p[2]).squaredNorm()});
-    if (!(twice_area > 1e-12 * longest)) continue;  // spans no surface; its cotangents are undefined
+    if (!has_area(twice_area,
+                  std::max({(p[1] - p[0]).squaredNorm(), (p[2] - p[1]).squaredNorm(), (p[0] - p[2]).squaredNorm()})))
+      continue;
     for (int k = 0; k < 3; ++k) {
       // The angle at corner k is opposite the edge (i, j); its cotangent is
       // dot / |cross| of the two edge vectors leaving the corner, and
@@ -108,9 +124,21 @@ LaplaceBeltrami laplace_beltrami(const Mesh& mesh, const LaplaceBeltramiOptions&
       e.half_cot[static_cast<std::size_t>(k)] = 0.5 * (p[i] - p[k]).dot(p[j] - p[k]) / twice_area;
     }
     e.area = 0.5 * twice_area;
-    for (const Index v : e.v) row[static_cast<std::size_t>(v)] = 0;
     elements.push_back(e);
   }
+  return elements;
+}
+
+}  // namespace
+
+LaplaceBeltrami laplace_beltrami(const Mesh& mesh, const LaplaceBeltramiOptions& options) {
+  const std::string source = mesh.source.empty() ? "mesh" : mesh.source;
+  if (mesh.num_triangles() == 0) throw InvalidMeshError(source, "no triangle: no Laplace-Beltrami operator");
+  // The triangles with area, their vertices renumbered to the rows.
+  std::vector<Element> elements = elements_of(mesh, options.intrinsic_delaunay);
+  std::vector<Index> row(static_cast<std::size_t>(mesh.num_vertices()), kInvalidIndex);
+  for (const Element& e : elements)
+    for (const Index v : e.v) row[static_cast<std::size_t>(v)] = 0;
   // Rows and columns for the vertices with area only.
   LaplaceBeltrami result;
   for (std::size_t v = 0; v < row.size(); ++v)

@@ -34,6 +34,11 @@ enum class MassMatrix {
 
 struct LaplaceBeltramiOptions {
   MassMatrix mass = MassMatrix::Consistent;  ///< see MassMatrix
+  /// The elements on the intrinsic Delaunay triangulation of the mesh
+  /// (intrinsic_delaunay.h: the same surface and vertices, its edges flipped
+  /// until each is Delaunay) instead of the mesh's own triangles. Off: the
+  /// operator of Reuter et al. on the triangles as given.
+  bool intrinsic_delaunay = false;
 };
 
 /// The stiffness and mass matrices, n x n for the n vertices with area (all
@@ -58,7 +63,8 @@ struct LaplaceBeltrami {
 /// its cotangents are undefined: it is left out of both matrices, and so is
 /// a vertex left on triangles of zero area only (its rows would be zero and
 /// the mass matrix singular), as the mesh reader drops the vertices no
-/// triangle uses (mesh_cleanup.h). Those slits are Neumann borders of no
+/// triangle uses (mesh_cleanup.h); the same rule holds for the triangles of
+/// the intrinsic Delaunay triangulation. Those slits are Neumann borders of no
 /// length: the spectrum of the surface does not change. Throws
 /// InvalidMeshError naming mesh.source when the mesh has no triangle of
 /// nonzero area.

@@ -102,7 +102,7 @@ ShapeDna shape_dna(const Mesh& mesh, const ShapeDnaOptions& options) {
   if (!(options.shift < 0)) throw InvalidArgument("shape_dna: the shift must be negative");
   const std::string source = mesh.source.empty() ? "mesh" : mesh.source;
   const Eigen::Index wanted = options.eigenvalues + 1;  // with the zero eigenvalue
-  LaplaceBeltrami operators = laplace_beltrami(mesh, {options.mass});
+  LaplaceBeltrami operators = laplace_beltrami(mesh, {options.mass, options.intrinsic_delaunay});
   const auto n = static_cast<Eigen::Index>(operators.vertex.size());  // the vertices with area
   if (n <= wanted)
     throw InvalidMeshError(source, std::to_string(n) + " vertices with area: too few for " +

@@ -50,6 +50,11 @@ struct ShapeDnaOptions {
   /// Also return the eigenfunctions (ShapeDna::eigenvectors, vertex_area),
   /// for the heat kernel (mesh/heat_kernel.h).
   bool eigenvectors = false;
+  /// The linear elements on the intrinsic Delaunay triangulation of the mesh
+  /// (LaplaceBeltramiOptions::intrinsic_delaunay): the eigenvalues of a mesh
+  /// with slivers and caps, as decimation leaves them, come out nearer the
+  /// surface's. Off: Reuter et al.'s elements on the triangles as given.
+  bool intrinsic_delaunay = false;
 };
 
 struct ShapeDna {

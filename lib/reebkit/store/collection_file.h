@@ -41,7 +41,10 @@ namespace reebkit {
 /// (quotient_function.h), so the attributes differ where two cells meet.
 /// 13: signature 112: the whole surface's heat kernel distribution
 /// (`heat_t*_*`, mesh/heat_kernel.h).
-inline constexpr int kCollectionLayoutVersion = 13;
+/// 14: the same columns, with every spectrum (`dna_*`, `heat_*`,
+/// `spectrum_*`) computed on the intrinsic Delaunay triangulation of its
+/// coarse copy (mesh/intrinsic_delaunay.h).
+inline constexpr int kCollectionLayoutVersion = 14;
 
 /// Where the file came from: file attributes, and two groups.
 struct Provenance {
