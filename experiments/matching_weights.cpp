@@ -387,7 +387,8 @@ int main(int argc, char** argv) {
     const Choice second = choose_among(around, choosing, guard, floor, aims);
     std::printf(
         "\nAround the grid's choice: min node weight 0.01, 0.05 x attribute 4, 8 x global geodesic 0, 0.8, "
-        "chosen the same way among these %zu settings (**bold**: the choice, MatchingOptions' default).\n\n%s",
+        "chosen the same way among these %zu settings (**bold**: the choice; MatchingOptions' defaults are the "
+        "**defaults** row above).\n\n%s",
         around.size(), header(all).c_str());
     for (std::size_t k = 0; k < around.size(); ++k) {
       char text[120];
