@@ -46,6 +46,7 @@ step() {  # step NAME COMMAND...: runs it and says how long it took
   printf '%s\t%s\n' "$name" "$((SECONDS - start))" >> "$work/steps.tsv"
 }
 printf 'step\tseconds\n' > "$work/steps.tsv"
+git -C "$source_dir" rev-parse --short HEAD > "$work/commit" 2>/dev/null || echo "?" > "$work/commit"
 
 # Closed CGAL meshes with a shape (500-20,000 vertices, one component), and
 # one pose per TOSCA class.
