@@ -208,7 +208,24 @@ evaluate() {
       --compare "$out/baseline-shape-dna.matrix:Shape-DNA" "$out/baseline-geodesic.matrix:geodesic-histogram" \
         "$out/baseline-d2.matrix:D2" \
       --local-scaling "${SCALING_K:-10}"
+  graph_stability_section "$out/$name.h5" >> "$report/$name/report.md"
   touch "$out/complete"
+}
+
+# graph_stability_section COLLECTION: a report section with the class lines
+# of `reeb info`: per class, how many of its graphs have its most common
+# (feature points, nodes, cycles), i.e. a graph that pose and sampling left
+# unchanged (issue 22), measured without correspondences.
+graph_stability_section() {
+  echo
+  echo "## Graph stability"
+  echo
+  echo "From \`reeb info\`: per class, its meshes and how many of their Reeb graphs have the class's"
+  echo "most common feature points / nodes / independent cycles."
+  echo
+  echo '```'
+  "$reeb" info "$1" | sed -n '/^[0-9]* classes/,$p' | grep -v '^failed: '
+  echo '```'
 }
 
 for name in $collections; do

@@ -338,6 +338,31 @@ TEST(ReebIndexCli, ResumeLabelsEveryEntryWithTheClassesGivenAndKeepsThemOtherwis
       << info_out;
 }
 
+// reeb info: per class, how many graphs have the class's most common
+// (feature points, nodes, cycles). A rotated and scaled copy of the elk has
+// the elk's graph (the invariance of sections 4.1.1 and 5.3); the cow (genus
+// 0) cannot have the elk's (genus 1: one cycle).
+TEST(ReebIndexCli, InfoCountsTheGraphsThatHaveTheirClassesMostCommonShape) {
+  const TempDir dir;
+  const std::filesystem::path folder = mesh_folder(dir, {"elk.off", "cow.off", "eight.off"});
+  ASSERT_EQ(reeb("perturb " + q(folder / "elk.off") + " -o " + q(folder / "elk_turned.off") +
+                 " --rotate random --scale 3 --seed 5")
+                .first,
+            0);
+  std::filesystem::remove(folder / "elk_turned.corr");
+  write_bytes(dir / "k.cla", "PSB 1\n2 4\n\nanimal 0 3\nelk\nelk_turned\ncow\n\nshape 0 1\neight\n");
+  const auto c = dir / "c.h5";
+  const auto [index, index_out] = reeb("index " + q(folder) + " -o " + q(c) + " --classes " + q(dir / "k.cla"));
+  ASSERT_EQ(index, 0) << index_out;
+  const auto [info, info_out] = reeb("info " + q(c));
+  ASSERT_EQ(info, 0) << info_out;
+  EXPECT_TRUE(contains(info_out, {"2 classes (meshes; graphs with the class's most common feature points / nodes / "
+                                  "cycles):\n",
+                                  "  animal\t3\t2 with ", " / 1\n", "  shape\t1\t1 with ",
+                                  "graphs with their class's most common shape: 3 of 4 (75.0 %)\n"}))
+      << info_out;
+}
+
 TEST(ReebIndexCli, ADamagedCollectionIsAClearErrorForEveryCommandThatOpensIt) {
   const TempDir dir;
   const std::filesystem::path folder = mesh_folder(dir, {"elk.off", "eight.off"});

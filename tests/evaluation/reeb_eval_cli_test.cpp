@@ -95,7 +95,20 @@ TEST_F(ReebEvalCli, ReportsTheHandComputedMeasuresOfTwoMethods) {
   EXPECT_FALSE(contains(csv, ",cod,"));
 
   EXPECT_EQ(read_file_bytes(out / "pr.png").substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
-  EXPECT_TRUE(contains(read_file_bytes(out / "pr.svg"), "<svg"));
+  const std::string svg = read_file_bytes(out / "pr.svg");
+  EXPECT_TRUE(contains(svg, "<svg"));
+
+  // The same evaluation again writes the same figures, byte for byte: a
+  // report re-run into results/ changes only where its figures do.
+  const std::filesystem::path again = dir_ / "again";
+  ASSERT_EQ(run_captured(reeb("'" + (dir_ / "const.matrix").string() + "' --cla '" + (dir_ / "toy.cla").string() +
+                              "' -o '" + again.string() + "' --name ties --compare '" +
+                              (dir_ / "perfect.txt").string() + ":oracle'"),
+                         dir_ / "log2.txt")
+                .first,
+            0);
+  EXPECT_EQ(read_file_bytes(again / "pr.svg"), svg);
+  EXPECT_EQ(read_file_bytes(again / "pr.png"), read_file_bytes(out / "pr.png"));
 }
 
 // A tight class at 0, 0.1, 0.2 and a loose one at 1, 2, 3 on a line: as read,

@@ -1,8 +1,12 @@
-// reeb info collection.h5: what a collection file holds (counts, classes,
-// failures) and where it came from (provenance: version, command, analysis
-// options, class file; layout version).
+// reeb info collection.h5: what a collection file holds (counts, classes
+// and how stable their graphs are, failures) and where it came from
+// (provenance: version, command, analysis options, class file; layout
+// version).
 #include "reeb/cli.h"
+#include "reebkit/evaluation/graph_stability.h"
 #include "reebkit/store/collection_file.h"
+
+#include <cstdio>
 
 #include <iostream>
 #include <map>
@@ -25,6 +29,8 @@ int run_info(const std::vector<std::string>& args) {
   const Provenance& provenance = reader.provenance();
   std::int64_t ok = 0, nodes = 0, edges = 0;
   std::map<std::string, std::int64_t> classes;
+  std::vector<GraphShape> shapes;  // of the graphs built
+  std::vector<std::string> labels;
   std::vector<std::pair<std::string, std::string>> failures;
   std::ostringstream listing;
   listing << "name\tclass\tstatus\tnodes\n";
@@ -36,6 +42,8 @@ int run_info(const std::vector<std::string>& args) {
       ++ok;
       nodes += e.num_nodes();
       edges += e.num_edges();
+      shapes.push_back({static_cast<std::int64_t>(e.feature_points.size()), e.num_nodes(), independent_cycles(e)});
+      labels.push_back(e.class_label);
     } else {
       failures.emplace_back(e.name, e.error);
     }
@@ -54,8 +62,25 @@ int run_info(const std::vector<std::string>& args) {
               << ", in its order)\n";
   std::cout << reader.size() << " meshes: " << ok << " ok, " << failures.size() << " failed; " << nodes << " nodes, "
             << edges << " edges\n";
-  std::cout << classes.size() << " classes" << (classes.empty() ? "" : ":") << "\n";
-  for (const auto& [name, count] : classes) std::cout << "  " << name << "\t" << count << "\n";
+  std::cout << classes.size() << " classes"
+            << (classes.empty() ? ""
+                                : " (meshes; graphs with the class's most common feature points / nodes / cycles):")
+            << "\n";
+  const GraphStability stability = graph_stability(shapes, labels);
+  for (const auto& [name, count] : classes) {
+    std::cout << "  " << name << "\t" << count;
+    for (const ClassStability& c : stability.classes)
+      if (c.label == name)
+        std::cout << "\t" << c.agreeing << " with " << c.most_common.features << " / " << c.most_common.nodes << " / "
+                  << c.most_common.cycles;
+    std::cout << "\n";
+  }
+  if (stability.members > 0) {
+    char share[32];
+    std::snprintf(share, sizeof share, "%.1f", 100.0 * stability.share());
+    std::cout << "graphs with their class's most common shape: " << stability.agreeing << " of " << stability.members
+              << " (" << share << " %)\n";
+  }
   for (const auto& [name, reason] : failures) std::cout << "failed: " << name << ": " << reason << "\n";
   if (list) std::cout << listing.str();
   return 0;
