@@ -3,6 +3,7 @@
 #include "bindings.h"
 
 #include "reebkit/evaluation/distance_matrix.h"
+#include "reebkit/evaluation/graph_stability.h"
 #include "reebkit/evaluation/retrieval_metrics.h"
 #include "reebkit/pipeline/analysis_options.h"
 #include "reebkit/pipeline/mesh_record.h"
@@ -218,6 +219,39 @@ void bind_collection(py::module_& m) {
           "Returns an (N, N) float64 array (defaults: AllPairsOptions, as `reeb distances --help`).\n\n"
           "Graph-matching distances of every pair of entries (`reeb distances`), rows and columns in collection "
           "order (names, classes); threads=0: as many as OpenMP offers.")
+      .def(
+          "graph_stability",
+          [](const Collection& c) {
+            std::vector<GraphShape> shapes;
+            std::vector<std::string> labels;
+            for (std::int64_t i = 0; i < c.reader.size(); ++i) {
+              const GraphRecord e = c.reader.entry(i);
+              if (!e.ok) continue;
+              shapes.push_back(graph_shape(e));
+              labels.push_back(e.class_label);
+            }
+            const GraphStability s = graph_stability(shapes, labels);
+            py::list classes;
+            for (const ClassStability& k : s.classes) {
+              py::dict row;
+              row["class"] = k.label;
+              row["members"] = k.members;
+              row["most_common"] = py::make_tuple(k.most_common.features, k.most_common.nodes, k.most_common.cycles);
+              row["agreeing"] = k.agreeing;
+              classes.append(row);
+            }
+            py::dict out;
+            out["classes"] = classes;
+            out["members"] = s.members;
+            out["agreeing"] = s.agreeing;
+            out["share"] = s.share();
+            return out;
+          },
+          "Returns a dict: how stable the graphs of each class are (`reeb info`).\n\n"
+          "Per class (in label order), its graphs built ('members'), the (feature points, nodes, cycles) most of "
+          "them have ('most_common', ties to the smallest) and how many have it ('agreeing'); then the totals "
+          "over every class and 'share' = agreeing / members. Entries without a class or that failed count "
+          "nowhere.")
       .def("__repr__", [](const Collection& c) {
         return "<reebkit.Collection '" + c.path + "': " + std::to_string(c.reader.size()) + " meshes>";
       });

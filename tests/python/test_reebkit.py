@@ -3,6 +3,7 @@ errors, the same collection; evaluate against hand-computed measures."""
 import concurrent.futures
 import json
 import math
+import shutil
 import threading
 import time
 import warnings
@@ -176,6 +177,28 @@ def test_collection_reads_back(collection, reeb):
         c["no-such-mesh"]
     with pytest.raises(IndexError):
         c[len(c)]
+
+
+def test_graph_stability_equals_reeb_info(reeb, tmp_path):
+    """Per class, the graphs with the class's most common (feature points, nodes,
+    cycles), as `reeb info` prints them: a copy of the elk has the elk's graph,
+    the cow (genus 0) not the elk's (genus 1)."""
+    folder = tmp_path / "meshes"
+    folder.mkdir()
+    for name in ("elk", "cow", "eight"):
+        shutil.copy(DATASETS / f"{name}.off", folder / f"{name}.off")
+    shutil.copy(DATASETS / "elk.off", folder / "elk_copy.off")
+    (tmp_path / "k.cla").write_text("PSB 1\n2 4\n\nanimal 0 3\nelk\nelk_copy\ncow\n\nshape 0 1\neight\n")
+    reeb("index", folder, "-o", tmp_path / "c.h5", "--classes", tmp_path / "k.cla", "--threads", "1")
+    s = reebkit.Collection(tmp_path / "c.h5").graph_stability()
+    assert [k["class"] for k in s["classes"]] == ["animal", "shape"]
+    animal = s["classes"][0]
+    assert (animal["members"], animal["agreeing"], animal["most_common"][2]) == (3, 2, 1)
+    assert (s["members"], s["agreeing"], s["share"]) == (4, 3, 0.75)
+    printed = reeb("info", tmp_path / "c.h5").stdout
+    for k in s["classes"]:
+        f, n, c = k["most_common"]
+        assert f"  {k['class']}\t{k['members']}\t{k['agreeing']} with {f} / {n} / {c}\n" in printed
 
 
 def test_query_equals_reeb_query(collection, reeb):

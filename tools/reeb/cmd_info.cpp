@@ -42,7 +42,7 @@ int run_info(const std::vector<std::string>& args) {
       ++ok;
       nodes += e.num_nodes();
       edges += e.num_edges();
-      shapes.push_back({static_cast<std::int64_t>(e.feature_points.size()), e.num_nodes(), independent_cycles(e)});
+      shapes.push_back(graph_shape(e));
       labels.push_back(e.class_label);
     } else {
       failures.emplace_back(e.name, e.error);

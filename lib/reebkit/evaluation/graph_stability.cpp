@@ -6,6 +6,10 @@
 
 namespace reebkit {
 
+GraphShape graph_shape(const GraphRecord& record) {
+  return {static_cast<std::int64_t>(record.feature_points.size()), record.num_nodes(), independent_cycles(record)};
+}
+
 GraphStability graph_stability(const std::vector<GraphShape>& shapes, const std::vector<std::string>& labels) {
   if (shapes.size() != labels.size())
     throw InvalidArgument("graph_stability: " + std::to_string(shapes.size()) + " graph shapes for " +

@@ -7,6 +7,8 @@
 // measures that claim without any correspondence between the meshes.
 #pragma once
 
+#include "reebkit/attributes/graph_record.h"
+
 #include <cstdint>
 #include <string>
 #include <tuple>
@@ -26,6 +28,9 @@ struct GraphShape {
     return std::tie(features, nodes, cycles) == std::tie(o.features, o.nodes, o.cycles);
   }
 };
+
+/// A record's feature points, nodes and independent cycles.
+GraphShape graph_shape(const GraphRecord& record);
 
 struct ClassStability {
   std::string label;
