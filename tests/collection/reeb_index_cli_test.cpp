@@ -264,7 +264,8 @@ TEST(ReebIndexCli, ExitStatusSaysWhetherMeshesFailed) {
   // info --list names every entry; distances says how failed rows are filled.
   const auto [info, info_out] = reeb("info " + q(c) + " --list");
   EXPECT_EQ(info, 0) << info_out;
-  EXPECT_TRUE(contains(info_out, {"name\tclass\tstatus\tnodes\n", "bad.off\t-\tfailed\t0\n", "elk.off\t-\tok\t"}))
+  EXPECT_TRUE(contains(info_out, {"name\tclass\tstatus\tnodes\tfeatures\tcycles\tcommon\n",
+                                  "bad.off\t-\tfailed\t0\t0\t0\t-\n", "elk.off\t-\tok\t"}))
       << info_out;
   const auto [distances, distances_out] = reeb("distances " + q(c) + " -o " + q(dir / "d.matrix"));
   EXPECT_EQ(distances, 0) << distances_out;
@@ -361,6 +362,15 @@ TEST(ReebIndexCli, InfoCountsTheGraphsThatHaveTheirClassesMostCommonShape) {
                                   "  animal\t3\t2 with ", " / 1\n", "  shape\t1\t1 with ",
                                   "graphs with their class's most common shape: 3 of 4 (75.0 %)\n"}))
       << info_out;
+  // --list marks which graphs those are: the elk and its copy, and the eight alone in its class.
+  const auto [listed, listed_out] = reeb("info " + q(c) + " --list");
+  ASSERT_EQ(listed, 0) << listed_out;
+  EXPECT_TRUE(contains(listed_out, {"\t1\tyes\n", "cow.off\tanimal\tok\t", "\t0\tno\n"})) << listed_out;
+  for (const std::string name : {"elk.off", "elk_turned.off", "eight.off"}) {
+    const std::size_t at = listed_out.find("\n" + name + "\t");
+    ASSERT_NE(at, std::string::npos) << name << "\n" << listed_out;
+    EXPECT_EQ(listed_out.substr(listed_out.find('\n', at + 1) - 4, 4), "\tyes") << name << "\n" << listed_out;
+  }
 }
 
 TEST(ReebIndexCli, ADamagedCollectionIsAClearErrorForEveryCommandThatOpensIt) {

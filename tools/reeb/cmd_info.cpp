@@ -10,7 +10,6 @@
 
 #include <iostream>
 #include <map>
-#include <sstream>
 
 namespace reebkit::cli {
 
@@ -19,7 +18,9 @@ int run_info(const std::vector<std::string>& args) {
   std::string path;
   bool list = false;
   options.add_options()("collection", po::value(&path)->required(), "collection file written by reeb index")(
-      "list", po::bool_switch(&list), "also list every entry: name, class, status (ok or failed), nodes");
+      "list", po::bool_switch(&list),
+      "also list every entry: name, class, status (ok or failed), nodes, feature points, cycles, and whether "
+      "its graph has its class's most common shape");
   po::positional_options_description positional;
   positional.add("collection", 1);
   po::variables_map vm;
@@ -32,23 +33,29 @@ int run_info(const std::vector<std::string>& args) {
   std::vector<GraphShape> shapes;  // of the graphs built
   std::vector<std::string> labels;
   std::vector<std::pair<std::string, std::string>> failures;
-  std::ostringstream listing;
-  listing << "name\tclass\tstatus\tnodes\n";
+  struct Row {
+    std::string name, label;
+    bool ok;
+    GraphShape shape;
+  };
+  std::vector<Row> rows;
   for (std::int64_t i = 0; i < reader.size(); ++i) {
     const GraphRecord e = reader.entry(i);
-    listing << e.name << "\t" << (e.class_label.empty() ? "-" : e.class_label) << "\t" << (e.ok ? "ok" : "failed")
-            << "\t" << e.num_nodes() << "\n";
+    rows.push_back({e.name, e.class_label, e.ok, e.ok ? graph_shape(e) : GraphShape{}});
     if (e.ok) {
       ++ok;
       nodes += e.num_nodes();
       edges += e.num_edges();
-      shapes.push_back(graph_shape(e));
+      shapes.push_back(rows.back().shape);
       labels.push_back(e.class_label);
     } else {
       failures.emplace_back(e.name, e.error);
     }
     if (!e.class_label.empty()) ++classes[e.class_label];
   }
+  const GraphStability stability = graph_stability(shapes, labels);
+  std::map<std::string, const ClassStability*> of_class;
+  for (const ClassStability& c : stability.classes) of_class[c.label] = &c;
   std::cout << path << ": reebkit collection, layout " << kCollectionLayoutVersion << "\n"
             << "  written by reebkit " << provenance.reebkit_version << " on " << provenance.created << "\n"
             << "  command: " << provenance.command << "\n"
@@ -66,13 +73,12 @@ int run_info(const std::vector<std::string>& args) {
             << (classes.empty() ? ""
                                 : " (meshes; graphs with the class's most common feature points / nodes / cycles):")
             << "\n";
-  const GraphStability stability = graph_stability(shapes, labels);
   for (const auto& [name, count] : classes) {
     std::cout << "  " << name << "\t" << count;
-    for (const ClassStability& c : stability.classes)
-      if (c.label == name)
-        std::cout << "\t" << c.agreeing << " with " << c.most_common.features << " / " << c.most_common.nodes << " / "
-                  << c.most_common.cycles;
+    if (const auto it = of_class.find(name); it != of_class.end()) {
+      const GraphShape& s = it->second->most_common;
+      std::cout << "\t" << it->second->agreeing << " with " << s.features << " / " << s.nodes << " / " << s.cycles;
+    }
     std::cout << "\n";
   }
   if (stability.members > 0) {
@@ -82,7 +88,17 @@ int run_info(const std::vector<std::string>& args) {
               << " (" << share << " %)\n";
   }
   for (const auto& [name, reason] : failures) std::cout << "failed: " << name << ": " << reason << "\n";
-  if (list) std::cout << listing.str();
+  if (list) {
+    // common: the entry's graph has its class's most common shape (yes, no;
+    // - without a class or a graph).
+    std::cout << "name\tclass\tstatus\tnodes\tfeatures\tcycles\tcommon\n";
+    for (const Row& r : rows) {
+      const auto it = of_class.find(r.label);
+      const char* common = !r.ok || it == of_class.end() ? "-" : it->second->most_common == r.shape ? "yes" : "no";
+      std::cout << r.name << "\t" << (r.label.empty() ? "-" : r.label) << "\t" << (r.ok ? "ok" : "failed") << "\t"
+                << r.shape.nodes << "\t" << r.shape.features << "\t" << r.shape.cycles << "\t" << common << "\n";
+    }
+  }
   return 0;
 }
 
