@@ -48,9 +48,10 @@
 # body-shape), and the datasets unpacked (ctest -R unpack_datasets).
 # COLLECTIONS (default all five) names the collections to build and
 # evaluate; the others' files are left as they are. REPORT_DIR (default
-# results/pose/): one folder per collection, each with report.md, pr.csv,
-# pr.png, pr.svg (the body-shape ones also people.txt: each person's changes
-# and poses). The meshes, class files, collection files and distance
+# results/pose/): one folder per collection, each with report.md (ending
+# with the graph stability of `reeb info`: per class, the graphs with its most
+# common feature points / nodes / cycles), pr.csv, pr.png, pr.svg (the
+# body-shape ones also people.txt: each person's changes and poses). The meshes, class files, collection files and distance
 # matrices are derived from academic-use data: they stay in
 # BUILD_DIR/pose_retrieval/NAME/ and are never committed (the remeshed and
 # body-shape meshes in meshes/, the class file NAME.cla). THREADS (default 2)
