@@ -222,15 +222,17 @@ void bind_collection(py::module_& m) {
       .def(
           "graph_stability",
           [](const Collection& c) {
-            std::vector<GraphShape> shapes;
-            std::vector<std::string> labels;
-            for (std::int64_t i = 0; i < c.reader.size(); ++i) {
-              const GraphRecord e = c.reader.entry(i);
-              if (!e.ok) continue;
-              shapes.push_back(graph_shape(e));
-              labels.push_back(e.class_label);
+            GraphStability s;
+            {
+              const py::gil_scoped_release release;
+              std::vector<GraphShape> shapes;
+              std::vector<std::string> labels;
+              constexpr std::int64_t kBatch = 512;  // entries() reads a batch in one read per dataset
+              for (std::int64_t first = 0; first < c.reader.size(); first += kBatch)
+                for (const GraphRecord& e : c.reader.entries(first, std::min(kBatch, c.reader.size() - first)))
+                  if (e.ok) shapes.push_back(graph_shape(e)), labels.push_back(e.class_label);
+              s = graph_stability(shapes, labels);
             }
-            const GraphStability s = graph_stability(shapes, labels);
             py::list classes;
             for (const ClassStability& k : s.classes) {
               py::dict row;
