@@ -225,13 +225,7 @@ void bind_collection(py::module_& m) {
             GraphStability s;
             {
               const py::gil_scoped_release release;
-              std::vector<GraphShape> shapes;
-              std::vector<std::string> labels;
-              constexpr std::int64_t kBatch = 512;  // entries() reads a batch in one read per dataset
-              for (std::int64_t first = 0; first < c.reader.size(); first += kBatch)
-                for (const GraphRecord& e : c.reader.entries(first, std::min(kBatch, c.reader.size() - first)))
-                  if (e.ok) shapes.push_back(graph_shape(e)), labels.push_back(e.class_label);
-              s = graph_stability(shapes, labels);
+              s = graph_stability(c.reader);
             }
             py::list classes;
             for (const ClassStability& k : s.classes) {

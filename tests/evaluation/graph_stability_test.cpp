@@ -1,6 +1,8 @@
 #include "reebkit/evaluation/graph_stability.h"
 
+#include "io/io_test_util.h"
 #include "reebkit/core/error.h"
+#include "store/collection_entries.h"
 
 #include <gtest/gtest.h>
 
@@ -40,6 +42,37 @@ TEST(GraphStability, TiesGoToTheSmallestShapeInAnyOrder) {
     EXPECT_EQ(s.classes[0].most_common, a);
     EXPECT_EQ(s.classes[0].agreeing, 1);
   }
+}
+
+// A collection file gives the figures of its graphs' shapes and classes
+// (failed entries and entries without a class left out), across more than
+// one batch of the reader.
+TEST(GraphStability, OfACollectionFileEqualsThatOfItsGraphs) {
+  test::TempDir dir;
+  std::vector<GraphShape> shapes;
+  std::vector<std::string> labels;
+  {
+    CollectionWriter writer(dir / "c.h5", test::test_provenance(), false);
+    for (std::int64_t i = 0; i < 1100; ++i) {
+      const GraphRecord e = test::make_entry(i);
+      writer.append(e);
+      if (e.ok) shapes.push_back(graph_shape(e)), labels.push_back(e.class_label);
+    }
+    writer.close();
+  }
+  const GraphStability expected = graph_stability(shapes, labels);
+  ASSERT_EQ(expected.classes.size(), 5u);  // make_entry's "class 0" .. "class 4"
+  ASSERT_GT(expected.agreeing, 0);
+  const GraphStability read = graph_stability(CollectionReader(dir / "c.h5"));
+  ASSERT_EQ(read.classes.size(), expected.classes.size());
+  for (std::size_t k = 0; k < read.classes.size(); ++k) {
+    EXPECT_EQ(read.classes[k].label, expected.classes[k].label);
+    EXPECT_EQ(read.classes[k].members, expected.classes[k].members);
+    EXPECT_EQ(read.classes[k].most_common, expected.classes[k].most_common);
+    EXPECT_EQ(read.classes[k].agreeing, expected.classes[k].agreeing);
+  }
+  EXPECT_EQ(read.members, expected.members);
+  EXPECT_EQ(read.agreeing, expected.agreeing);
 }
 
 TEST(GraphStability, NoClassesNoMembersAndMismatchedSizesRefused) {

@@ -134,6 +134,59 @@ TEST(CollectionFile, RoundTripFieldByField) {
   EXPECT_THROW(reader.class_label(-1), InvalidArgument);
 }
 
+// One pass in batches gives every entry, in order and field by field, for
+// batches of one entry, of sizes that do and do not divide the count, and
+// larger than the file.
+TEST(CollectionFile, ForEachEntryVisitsEveryEntryInOrderWhateverTheBatch) {
+  TempDir dir;
+  write_entries(dir / "c.h5", 0, 700, false);
+  const CollectionReader reader(dir / "c.h5");
+  for (const std::int64_t batch : {1, 3, 350, 512, 700, 10000}) {
+    std::int64_t next = 0;
+    reader.for_each_entry(
+        [&](std::int64_t i, const GraphRecord& e) {
+          ASSERT_EQ(i, next++);
+          expect_same(make_entry(i), e, "batch " + std::to_string(batch));
+        },
+        EntryParts::Whole, batch);
+    EXPECT_EQ(next, 700) << "batch " << batch;
+  }
+  EXPECT_THROW(reader.for_each_entry([](std::int64_t, const GraphRecord&) {}, EntryParts::Whole, 0), InvalidArgument);
+}
+
+// An outline is the entry without its attributes, geometry, skeletons,
+// timings and signature: the rest field by field, those left empty.
+TEST(CollectionFile, OutlinesAreTheEntriesWithoutTheirAttributes) {
+  const TempDir dir;
+  write_entries(dir / "c.h5", 0, 300, false);
+  const CollectionReader reader(dir / "c.h5");
+  std::int64_t seen = 0;
+  reader.for_each_entry(
+      [&](std::int64_t i, const GraphRecord& outline) {
+        ++seen;
+        const GraphRecord expected = make_entry(i);
+        SCOPED_TRACE("outline " + std::to_string(i));
+        EXPECT_EQ(outline.name, expected.name);
+        EXPECT_EQ(outline.class_label, expected.class_label);
+        EXPECT_EQ(outline.content_hash, expected.content_hash);
+        EXPECT_EQ(outline.vertices, expected.vertices);
+        EXPECT_EQ(outline.faces, expected.faces);
+        EXPECT_EQ(outline.ok, expected.ok);
+        EXPECT_EQ(outline.error, expected.error);
+        EXPECT_EQ(outline.timings, decltype(outline.timings){});
+        EXPECT_EQ(outline.nodes, expected.nodes);
+        EXPECT_EQ(outline.edges, expected.edges);
+        EXPECT_EQ(outline.feature_points, expected.feature_points);
+        EXPECT_TRUE(outline.node_geometry.empty() && outline.node_attributes.empty() &&
+                    outline.skeleton_offset.empty() && outline.skeleton_points.empty() &&
+                    outline.edge_attributes.empty() && outline.signature.empty());
+        EXPECT_EQ(outline.num_nodes(), expected.num_nodes());
+        EXPECT_EQ(outline.num_edges(), expected.num_edges());
+      },
+      EntryParts::Outline, 128);
+  EXPECT_EQ(seen, 300);
+}
+
 TEST(CollectionFile, EmptyCollection) {
   const TempDir dir;
   CollectionWriter(dir / "c.h5", test_provenance(), false).close();

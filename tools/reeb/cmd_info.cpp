@@ -1,7 +1,7 @@
 // reeb info collection.h5: what a collection file holds (counts, classes
 // and how stable their graphs are, failures) and where it came from
 // (provenance: version, command, analysis options, class file; layout
-// version).
+// version). The entries' outlines are read in one pass of batches.
 #include "reeb/cli.h"
 #include "reebkit/evaluation/graph_stability.h"
 #include "reebkit/store/collection_file.h"
@@ -39,20 +39,21 @@ int run_info(const std::vector<std::string>& args) {
     GraphShape shape;
   };
   std::vector<Row> rows;
-  for (std::int64_t i = 0; i < reader.size(); ++i) {
-    const GraphRecord e = reader.entry(i);
-    rows.push_back({e.name, e.class_label, e.ok, e.ok ? graph_shape(e) : GraphShape{}});
-    if (e.ok) {
-      ++ok;
-      nodes += e.num_nodes();
-      edges += e.num_edges();
-      shapes.push_back(rows.back().shape);
-      labels.push_back(e.class_label);
-    } else {
-      failures.emplace_back(e.name, e.error);
-    }
-    if (!e.class_label.empty()) ++classes[e.class_label];
-  }
+  reader.for_each_entry(
+      [&](std::int64_t, const GraphRecord& e) {
+        rows.push_back({e.name, e.class_label, e.ok, e.ok ? graph_shape(e) : GraphShape{}});
+        if (e.ok) {
+          ++ok;
+          nodes += e.num_nodes();
+          edges += e.num_edges();
+          shapes.push_back(rows.back().shape);
+          labels.push_back(e.class_label);
+        } else {
+          failures.emplace_back(e.name, e.error);
+        }
+        if (!e.class_label.empty()) ++classes[e.class_label];
+      },
+      EntryParts::Outline);
   const GraphStability stability = graph_stability(shapes, labels);
   std::map<std::string, const ClassStability*> of_class;
   for (const ClassStability& c : stability.classes) of_class[c.label] = &c;

@@ -26,7 +26,7 @@ const std::vector<Command>& commands() {
       {"graph", "high-level Reeb graph, segmentation and skeleton of a mesh", run_graph},
       {"deform", "turn the component of a Reeb graph node (a limb) about where it attaches", run_deform},
       {"index", "index a collection of meshes into one HDF5 file of attributed Reeb graphs", run_index},
-      {"info", "what a collection file holds: counts, classes, failures, provenance", run_info},
+      {"info", "what a collection file holds: counts, classes, graph stability, failures, provenance", run_info},
       {"export", "one graph of a collection file as the JSON of reeb graph", run_export},
       {"match", "graph-matching distance and node correspondence of two meshes or collection entries", run_match},
       {"eval", "retrieval measures (NN, FT, ST, E, DCG, precision-recall) of distance matrices, as a report", run_eval},

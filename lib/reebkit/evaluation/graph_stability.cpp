@@ -31,4 +31,15 @@ GraphStability graph_stability(const std::vector<GraphShape>& shapes, const std:
   return out;
 }
 
+GraphStability graph_stability(const CollectionReader& collection) {
+  std::vector<GraphShape> shapes;
+  std::vector<std::string> labels;
+  collection.for_each_entry(
+      [&](std::int64_t, const GraphRecord& e) {
+        if (e.ok) shapes.push_back(graph_shape(e)), labels.push_back(e.class_label);
+      },
+      EntryParts::Outline);
+  return graph_stability(shapes, labels);
+}
+
 }  // namespace reebkit

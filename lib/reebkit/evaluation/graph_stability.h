@@ -8,6 +8,7 @@
 #pragma once
 
 #include "reebkit/attributes/graph_record.h"
+#include "reebkit/store/collection_file.h"
 
 #include <cstdint>
 #include <string>
@@ -53,5 +54,9 @@ struct GraphStability {
 /// label (no class) are left out. Throws InvalidArgument when the two
 /// vectors differ in size.
 GraphStability graph_stability(const std::vector<GraphShape>& shapes, const std::vector<std::string>& labels);
+
+/// The same of the graphs a collection file holds (its failed entries left
+/// out), read in one pass of batches of their outlines (EntryParts::Outline).
+GraphStability graph_stability(const CollectionReader& collection);
 
 }  // namespace reebkit

@@ -766,18 +766,29 @@ OpenCollection open_collection(const fs::path& path) {
 /// Every entry's offsets into each part (size + 1, checked), indexed by part.
 using EntryOffsets = std::array<std::vector<std::int64_t>, kPartCount>;
 
-/// Entries [first, first + n) read with one call per dataset; their offsets
-/// from `offsets` when given (read whole before), else read with them.
-std::vector<GraphRecord> read_entries(const Tables& t, const EntryOffsets* offsets, std::int64_t first,
-                                      std::int64_t n) {
+/// Whether EntryParts::Outline reads dataset `spec`: not the per-node and
+/// per-edge attributes, node geometry, skeletons, timings and signature.
+bool in_outline(const Dataset& spec) {
+  for (const char* left_out :
+       {"timings", "signature", "node_geometry", "node_attr", "skeleton_offset", "skeleton_points", "edge_attr"})
+    if (std::strcmp(spec.name, left_out) == 0) return false;
+  return true;
+}
+
+/// Entries [first, first + n) read with one call per dataset (those of
+/// `parts`); their offsets from `offsets` when given (read whole before),
+/// else read with them.
+std::vector<GraphRecord> read_entries(const Tables& t, const EntryOffsets* offsets, std::int64_t first, std::int64_t n,
+                                      EntryParts parts = EntryParts::Whole) {
   const std::vector<Dataset>& specs = datasets();
+  const auto read = [parts](const Dataset& spec) { return parts == EntryParts::Whole || in_outline(spec); };
   std::vector<GraphRecord> out(static_cast<std::size_t>(n));
   // Entry k's rows of part p: [bounds[p][k], bounds[p][k + 1]).
   std::array<std::vector<std::int64_t>, kPartCount> bounds;
   for (std::int64_t k = 0; k <= n; ++k) bounds[kEntry].push_back(first + k);
   for (std::size_t d = 0; d < specs.size(); ++d) {
     const Dataset& spec = specs[d];
-    if (!spec.is_offsets()) continue;
+    if (!spec.is_offsets() || !read(spec)) continue;
     const std::vector<std::int64_t>& rows = bounds[spec.part];
     const std::int64_t row0 = rows.front();
     std::vector<std::int64_t> offset;
@@ -800,7 +811,7 @@ std::vector<GraphRecord> read_entries(const Tables& t, const EntryOffsets* offse
   }
   for (std::size_t d = 0; d < specs.size(); ++d) {
     const Dataset& spec = specs[d];
-    if (spec.is_offsets()) continue;
+    if (spec.is_offsets() || !read(spec)) continue;
     const Table& table = t.table[d];
     const std::vector<std::int64_t>& rows = bounds[spec.part];
     const std::int64_t row0 = rows.front();
@@ -941,14 +952,23 @@ GraphRecord CollectionReader::entry(std::int64_t i) const {
                  [&] { return std::move(read_entries(impl_->tables, impl_->offsets_for(1), i, 1).front()); });
 }
 
-std::vector<GraphRecord> CollectionReader::entries(std::int64_t first, std::int64_t count) const {
+std::vector<GraphRecord> CollectionReader::entries(std::int64_t first, std::int64_t count, EntryParts parts) const {
   if (first < 0 || count < 0 || first + count > size())
     throw InvalidArgument(impl_->path.string() + ": entries " + std::to_string(first) + " to " +
                           std::to_string(first + count - 1) + " out of range (the file holds " +
                           std::to_string(size()) + ")");
   if (count == 0) return {};
   return guarded(impl_->path, "reading entries",
-                 [&] { return read_entries(impl_->tables, impl_->offsets_for(count), first, count); });
+                 [&] { return read_entries(impl_->tables, impl_->offsets_for(count), first, count, parts); });
+}
+
+void CollectionReader::for_each_entry(const std::function<void(std::int64_t, const GraphRecord&)>& visit,
+                                      EntryParts parts, std::int64_t batch) const {
+  if (batch < 1) throw InvalidArgument(impl_->path.string() + ": for_each_entry needs a batch of 1 entry or more");
+  for (std::int64_t first = 0; first < size(); first += batch) {
+    const std::vector<GraphRecord> block = entries(first, std::min(batch, size() - first), parts);
+    for (std::size_t k = 0; k < block.size(); ++k) visit(first + static_cast<std::int64_t>(k), block[k]);
+  }
 }
 
 // ---------------------------------------------------------------------------

@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -103,6 +104,16 @@ class CollectionWriter {
 /// (`reeb --verbose`); off by default: the Error's message says it all.
 void print_hdf5_error_stacks(bool on);
 
+/// What CollectionReader::entries() reads of each entry.
+enum class EntryParts {
+  Whole,  ///< every field
+  /// The entry's name, class, status, error, content hash and sizes, and its
+  /// graph's nodes, edges and feature points; not the node and edge
+  /// attributes, node geometry, skeletons, timings and signature (left empty
+  /// or zero): what counting graphs needs, a fraction of the bytes.
+  Outline,
+};
+
 /// Reads a collection file.
 class CollectionReader {
  public:
@@ -131,7 +142,13 @@ class CollectionReader {
   GraphRecord entry(std::int64_t i) const;
   /// Entries [first, first + count) in one read per dataset: much faster
   /// than entry() one by one (all of them: entries(0, size())).
-  std::vector<GraphRecord> entries(std::int64_t first, std::int64_t count) const;
+  std::vector<GraphRecord> entries(std::int64_t first, std::int64_t count, EntryParts parts = EntryParts::Whole) const;
+  /// Calls visit(i, entry i) for every entry in order, reading `batch`
+  /// entries at a time with entries(): one pass over a collection of any
+  /// size in the memory of `batch` graphs. Throws InvalidArgument for a
+  /// batch below 1.
+  void for_each_entry(const std::function<void(std::int64_t, const GraphRecord&)>& visit,
+                      EntryParts parts = EntryParts::Whole, std::int64_t batch = 512) const;
   const Provenance& provenance() const;
 
  private:
