@@ -441,6 +441,78 @@ TEST(FeaturePoints, TheVertexFarthestFromTheCentroidIsTheSameWhateverTheNumberin
   EXPECT_THROW(farthest_from_centroid(Mesh{}), InvalidArgument);
 }
 
+// FeatureRule::Center: one point per arm tip, as eq. (6) gives, and the
+// centre of the diameter on the hub, halfway between the diameter's ends.
+TEST(FeaturePoints, TheCenterRuleFindsOnePointPerArmTipSeenFromTheHub) {
+  FeatureOptions center;
+  center.rule = FeatureRule::Center;
+  for (const int arms : {2, 3, 5, 8, 12}) {
+    SCOPED_TRACE(std::to_string(arms) + " arms");
+    const StarOptions options = star(arms);
+    const Mesh mesh = make_star(options);
+    const MeshGraph g = build_mesh_graph(mesh);
+    const FeaturePoints fp = extract_feature_points(mesh, g, center);
+    ASSERT_EQ(fp.vertices.size(), static_cast<std::size_t>(arms));
+    // The ends first, then the tips.
+    EXPECT_EQ(fp.vertices[0], fp.source1);
+    EXPECT_EQ(fp.vertices[1], fp.source2);
+    const double radius = 0.05 * fp.diameter;
+    for (const Index tip : arm_tips(mesh, options)) {
+      const DistanceField d = fast_marching(g, tip);
+      EXPECT_EQ(std::count_if(fp.vertices.begin(), fp.vertices.end(), [&](Index f) { return d.distance[f] < radius; }),
+                1)
+          << "tip " << tip;
+    }
+    ASSERT_NE(fp.center, kInvalidIndex);
+    const auto c = static_cast<std::size_t>(fp.center);
+    EXPECT_NEAR(fp.f1[c], 0.5 * fp.diameter, 0.02 * fp.diameter);
+    EXPECT_NEAR(fp.f2[c], 0.5 * fp.diameter, 0.02 * fp.diameter);
+    EXPECT_EQ(features_of(mesh).center, kInvalidIndex);  // eq. (6) has none
+  }
+}
+
+// The rule compares distances on the tie grid: a rotated, moved and scaled
+// copy gets the same centre and the same points.
+TEST(FeaturePoints, TheCenterRuleIsInvariantToRotationTranslationAndScale) {
+  const Mesh mesh = make_star(star(6));
+  FeatureOptions center;
+  center.rule = FeatureRule::Center;
+  const FeaturePoints reference = features_of(mesh, center);
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    Similarity t;
+    t.rotation = random_rotation(seed);
+    t.scale = 0.01 * static_cast<double>(seed * seed * seed * 10);
+    t.translation = Vec3(3.0, -7.0, 1e3) * static_cast<double>(seed);
+    const FeaturePoints copy = features_of(transformed(mesh, t), center);
+    EXPECT_EQ(copy.vertices, reference.vertices) << "seed " << seed;
+    EXPECT_EQ(copy.center, reference.center) << "seed " << seed;
+  }
+}
+
+// A tip is a maximum of f_c persisting at least tip_persistence x the
+// diameter: above an arm's length, the diameter's ends are left and the
+// farthest tip from the centre, f_c's global maximum, which never merges
+// into a higher one.
+TEST(FeaturePoints, TheCenterRuleKeepsTheTipsOfProtrusionsLongerThanTheThreshold) {
+  const Mesh mesh = make_star(star(5));
+  FeatureOptions center;
+  center.rule = FeatureRule::Center;
+  const FeaturePoints all = features_of(mesh, center);
+  ASSERT_EQ(all.vertices.size(), 5u);
+  center.tip_persistence = 0.6;  // an arm is less than half the diameter
+  const FeaturePoints fewer = features_of(mesh, center);
+  ASSERT_EQ(fewer.vertices.size(), 3u);
+  EXPECT_EQ(fewer.vertices[0], all.source1);
+  EXPECT_EQ(fewer.vertices[1], all.source2);
+  EXPECT_EQ(fewer.vertices[2], all.vertices[2]);  // the farthest from the centre comes first after the ends
+}
+
+TEST(FeaturePoints, FeatureRuleNamesRoundTrip) {
+  for (const FeatureRule rule : {FeatureRule::Intersection, FeatureRule::Center})
+    EXPECT_EQ(parse_feature_rule(feature_rule_name(rule)), rule);
+  EXPECT_THROW(parse_feature_rule("centre"), InvalidArgument);
+}
+
 TEST(FeaturePoints, FeatureSiteNamesRoundTrip) {
   for (const FeatureSite site : {FeatureSite::Extremum, FeatureSite::Midpoint})
     EXPECT_EQ(parse_feature_site(feature_site_name(site)), site);
@@ -465,6 +537,9 @@ TEST(FeaturePoints, RejectsBadInput) {
     FeatureOptions bad_protrusion;
     bad_protrusion.protrusion_persistence = bad;
     EXPECT_THROW(extract_feature_points(cube, g, bad_protrusion), InvalidArgument) << bad;
+    FeatureOptions bad_tip;
+    bad_tip.tip_persistence = bad;
+    EXPECT_THROW(extract_feature_points(cube, g, bad_tip), InvalidArgument) << bad;
   }
   // Two disjoint triangles: not connected.
   Mesh two;

@@ -22,6 +22,8 @@ AnalysisOptions changed() {
   o.features.extra_seeds = 0;
   o.features.protrusion_persistence = 0.05;
   o.features.site = FeatureSite::Extremum;
+  o.features.rule = FeatureRule::Center;
+  o.features.tip_persistence = 0.06;
   o.features.start = DiameterStart::Vertex;
   o.reeb.level_lines = LevelLines::Paper;
   o.reeb.leaves = Leaves::Propagation;

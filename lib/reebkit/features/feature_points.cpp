@@ -24,6 +24,10 @@ constexpr NamedValues<DiameterStart, 2> kDiameterStartNames{"diameter start",
                                                             {{{DiameterStart::Vertex, "vertex"},
                                                               {DiameterStart::Centroid, "centroid"}}}};
 
+constexpr NamedValues<FeatureRule, 2> kFeatureRuleNames{"feature rule",
+                                                        {{{FeatureRule::Intersection, "intersection"},
+                                                          {FeatureRule::Center, "center"}}}};
+
 constexpr NamedValues<FeatureSite, 2> kFeatureSiteNames{"feature site",
                                                         {{{FeatureSite::Extremum, "extremum"},
                                                           {FeatureSite::Midpoint, "midpoint"}}}};
@@ -224,7 +228,54 @@ Index geodesic_midpoint(GeodesicSolver& solver, Index a, Index b, double reach, 
   return best == kInvalidIndex ? fallback : best;
 }
 
+// FeatureRule::Center on the snapped f1 and f2 (whole units of the tie
+// grid): the ends s1 and s2, then the maxima of f_c persisting at least
+// options.tip_persistence x the diameter that lie within `near`'s radius of
+// an extremum of f1 or f2 (out.extrema1, out.extrema2), the farthest from the
+// centre first (ties: the smaller id), each where no feature point lies
+// within that radius.
+void tips_from_center(const MeshGraph& graph, const FeatureOptions& options, const std::vector<double>& f1,
+                      const std::vector<double>& f2, const GeodesicOptions& near, GeodesicSolver& solver,
+                      FeaturePoints& out) {
+  const auto at = [](const std::vector<double>& a, Index v) { return a[static_cast<std::size_t>(v)]; };
+  // The centre: the smallest max(f1, f2), ties to the smaller id.
+  Index center = 0;
+  for (Index v = 1; v < graph.num_vertices(); ++v)
+    if (std::max(at(f1, v), at(f2, v)) < std::max(at(f1, center), at(f2, center))) center = v;
+  out.center = center;
+  std::vector<double> fc = solver.run({center}).distance;
+  for (double& x : fc) x = std::round(x / (kTieGrid * out.diameter));
+  std::vector<Index> tips = persistent_extrema(graph, fc, std::round(options.tip_persistence / kTieGrid));
+  tips.erase(std::remove_if(tips.begin(), tips.end(),
+                            [&](Index v) {
+                              return v == out.source1 || v == out.source2 || !is_local_maximum(graph, fc, v);
+                            }),
+             tips.end());
+  std::sort(tips.begin(), tips.end(),
+            [&](Index a, Index b) { return std::make_pair(-at(fc, a), a) < std::make_pair(-at(fc, b), b); });
+  tips.insert(tips.begin(), {out.source1, out.source2});
+  std::vector<double> to_features(fc.size(), std::numeric_limits<double>::infinity());
+  // A maximum of f_c far from every extremum of f1 and f2 is where the
+  // fronts from the centre meet around the bulk (its antipode), not a tip.
+  std::vector<Index> extrema = out.extrema1;
+  extrema.insert(extrema.end(), out.extrema2.begin(), out.extrema2.end());
+  const std::vector<double> to_extrema = solver.run(extrema, near).distance;
+  for (const Index v : tips) {
+    const bool end = v == out.source1 || v == out.source2;
+    if (at(to_features, v) <= near.radius || (!end && !(at(to_extrema, v) <= near.radius))) continue;
+    out.vertices.push_back(v);
+    const DistanceField& ball = solver.run({v}, near);
+    for (const Index w : solver.settled())
+      to_features[static_cast<std::size_t>(w)] =
+          std::min(at(to_features, w), ball.distance[static_cast<std::size_t>(w)]);
+  }
+}
+
 }  // namespace
+
+const char* feature_rule_name(FeatureRule rule) { return kFeatureRuleNames.name(rule); }
+
+FeatureRule parse_feature_rule(const std::string& name) { return kFeatureRuleNames.parse(name); }
 
 const char* diameter_start_name(DiameterStart start) { return kDiameterStartNames.name(start); }
 
@@ -271,6 +322,9 @@ FeaturePoints extract_feature_points(const Mesh& mesh, const MeshGraph& graph, c
   if (!(options.min_persistence >= 0.0 && options.min_persistence <= 1.0))
     throw InvalidArgument("extract_feature_points: min_persistence must lie in [0, 1], got " +
                           std::to_string(options.min_persistence));
+  if (!(options.tip_persistence >= 0.0 && options.tip_persistence <= 1.0))
+    throw InvalidArgument("extract_feature_points: tip_persistence must lie in [0, 1], got " +
+                          std::to_string(options.tip_persistence));
   if (!(options.protrusion_persistence >= 0.0 && options.protrusion_persistence <= 1.0))
     throw InvalidArgument("extract_feature_points: protrusion_persistence must lie in [0, 1], got " +
                           std::to_string(options.protrusion_persistence));
@@ -358,6 +412,11 @@ FeaturePoints extract_feature_points(const Mesh& mesh, const MeshGraph& graph, c
   const double radius = options.epsilon * out.diameter, radius_units = std::round(options.epsilon / kTieGrid);
   GeodesicOptions near{radius};
   near.separate_sources = true;  // the extrema are points
+  if (options.rule == FeatureRule::Center) {
+    tips_from_center(graph, options, f1, f2, near, solver, out);
+    if (options.protrusion_persistence > 0.0) add_protrusion_tips(graph, options, f1, f2, solver, out);
+    return out;
+  }
   // The distance to the nearest extremum of each function, and which it is.
   std::vector<double> to_e1, to_e2;
   std::vector<Index> nearest_e1, nearest_e2;

@@ -24,6 +24,35 @@ enum class FeatureSite {
   Midpoint,
 };
 
+/// How the feature points are chosen from the geodesic functions.
+enum class FeatureRule {
+  /// Eq. (6): the relaxed intersection of the extrema of f1 and f2, the
+  /// functions from the diameter ends. Which small protrusions (an ear, a
+  /// jaw) are extrema of both depends on where the two ends lie, and on an
+  /// articulated shape with several nearly tied pairs of ends the pose
+  /// decides which pair is the diameter.
+  Intersection,
+  /// The tips seen from the centre: the diameter ends, then the local maxima
+  /// of f_c, the distance from the centre of the diameter (the vertex of
+  /// smallest max(f1, f2)), whose persistence is at least
+  /// FeatureOptions::tip_persistence x diameter and which lie within epsilon
+  /// of an extremum of f1 or of f2 (not necessarily both, as eq. 6 asks),
+  /// farthest first, epsilon apart. The centre lies on the bulk of the shape
+  /// whichever pair is the diameter, and from there the tip of every
+  /// protrusion longer than the threshold is a maximum; the extrema of f1 or
+  /// f2 rule out the maxima where the fronts from the centre meet around the
+  /// bulk. One full pass more than eq. (6) (f_c). Not the default: it holds
+  /// the graphs of more poses of articulated animals, and fewer feature
+  /// points under resampling (docs/results.md, "The tips seen from the
+  /// centre").
+  Center,
+};
+
+/// "intersection" or "center": the names of the option --feature-rule.
+const char* feature_rule_name(FeatureRule rule);
+/// Inverse of feature_rule_name; throws InvalidArgument naming the accepted values.
+FeatureRule parse_feature_rule(const std::string& name);
+
 /// Where the search for the diameter ends starts.
 enum class DiameterStart {
   /// Eq. (2) from v_r = FeatureOptions::start_vertex (vertex 0 by default):
@@ -117,6 +146,13 @@ struct FeatureOptions {
   /// round tips in place under resampling (docs/results.md, "Feature points
   /// halfway between their two extrema").
   FeatureSite site = FeatureSite::Midpoint;
+  /// Which rule chooses the feature points: eq. (6) (Intersection, the
+  /// paper's) or the tips seen from the centre (Center).
+  FeatureRule rule = FeatureRule::Intersection;
+  /// FeatureRule::Center: the persistence of a maximum of f_c, as a share of
+  /// the diameter, that makes it a tip (a protrusion at least that long
+  /// beyond where it joins the rest). Unused by eq. (6). In [0, 1].
+  double tip_persistence = 0.08;
 };
 
 /// Geodesic distances closer than this fraction of the diameter count as
@@ -137,6 +173,9 @@ struct FeaturePoints {
   std::vector<Index> extrema1;
   /// E2: local minima and maxima of f2 (with persistence >= min_persistence x diameter)
   std::vector<Index> extrema2;
+  /// FeatureRule::Center: the centre of the diameter, source of f_c;
+  /// kInvalidIndex under eq. (6).
+  Index center = kInvalidIndex;
   int sweeps = 0;  ///< full geodesic passes spent finding v_s1, v_s2, f1 and f2
   /// The method of f1, f2 and the epsilon balls (FeatureOptions::geodesic).
   Geodesic geodesic = Geodesic::FastMarching;

@@ -12,6 +12,10 @@ static OptionValue option_value_of(Geodesic method) { return std::string(geodesi
 static OptionValue option_value_of(LevelLines lines) { return std::string(level_lines_name(lines)); }
 static OptionValue option_value_of(Leaves leaves) { return std::string(leaves_name(leaves)); }
 static OptionValue option_value_of(FeatureSite site) { return std::string(feature_site_name(site)); }
+static OptionValue option_value_of(FeatureRule rule) { return std::string(feature_rule_name(rule)); }
+static void set_from_option(const OptionValue& value, FeatureRule& rule) {
+  rule = parse_feature_rule(std::get<std::string>(value));
+}
 static OptionValue option_value_of(DiameterStart start) { return std::string(diameter_start_name(start)); }
 static void set_from_option(const OptionValue& value, DiameterStart& start) {
   start = parse_diameter_start(std::get<std::string>(value));
@@ -74,6 +78,14 @@ const std::vector<AnalysisOptionField>& analysis_option_fields() {
             "between the extremum of f1 and that of f2, the default: steadier on round tips) or extremum (on the "
             "extremum the greedy order takes, layout 9 and before)",
             [](auto& o) -> auto& { return o.features.site; }),
+      field("feature_rule", "how the feature points are chosen: intersection (eq. 6, the relaxed intersection of "
+            "the extrema of f1 and f2, the default) or center (the diameter ends and the maxima of the distance "
+            "from the centre of the diameter persisting at least tip_persistence and within epsilon of an extremum "
+            "of f1 or f2, epsilon apart)",
+            [](auto& o) -> auto& { return o.features.rule; }),
+      field("tip_persistence", "feature_rule center: the persistence, as a fraction of the geodesic diameter, "
+            "from which a maximum of the distance from the centre is a tip",
+            [](auto& o) -> auto& { return o.features.tip_persistence; }, OptionRange{0, 1}),
       field("level_lines", "what a level line is: contour (the connected curves of the propagation front, exact "
             "topology) or paper (Definition 6: connected sets of candidate vertices)",
             [](auto& o) -> auto& { return o.reeb.level_lines; }),
