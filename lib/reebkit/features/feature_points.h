@@ -160,9 +160,10 @@ struct FeatureOptions {
 inline constexpr double kTieGrid = 1e-9;
 
 struct FeaturePoints {
-  /// F of eq. (6), in selection order: pairs of coinciding extrema first,
-  /// then by how far apart the E1 and E2 extrema of a candidate lie; each
-  /// at its FeatureOptions::site.
+  /// F in selection order. Eq. (6): pairs of coinciding extrema first, then
+  /// by how far apart the E1 and E2 extrema of a candidate lie; each at its
+  /// FeatureOptions::site. FeatureRule::Center: source1, source2, then the
+  /// tips farthest from the centre first.
   std::vector<Index> vertices;
   Index source1 = kInvalidIndex;  ///< v_s1, origin of f1 (eq. 2)
   Index source2 = kInvalidIndex;  ///< v_s2, origin of f2 (eq. 4)
