@@ -228,6 +228,26 @@ Index geodesic_midpoint(GeodesicSolver& solver, Index a, Index b, double reach, 
   return best == kInvalidIndex ? fallback : best;
 }
 
+// `f` counted in whole units of `unit` (kTieGrid x the diameter; f as it
+// is where the unit is 0): see extract_feature_points.
+std::vector<double> snapped(std::vector<double> f, double unit) {
+  if (unit > 0.0)
+    for (double& x : f) x = std::round(x / unit);
+  return f;
+}
+
+// Takes `v` as a feature point: appends it to out.vertices and lowers
+// to_features to the distances from it within `near`'s radius.
+void take_feature_point(Index v, const GeodesicOptions& near, GeodesicSolver& solver, FeaturePoints& out,
+                        std::vector<double>& to_features) {
+  out.vertices.push_back(v);
+  const DistanceField& ball = solver.run({v}, near);
+  for (const Index w : solver.settled()) {
+    const auto k = static_cast<std::size_t>(w);
+    to_features[k] = std::min(to_features[k], ball.distance[k]);
+  }
+}
+
 // FeatureRule::Center on the snapped f1 and f2 (whole units of the tie
 // grid): the ends s1 and s2, then the maxima of f_c persisting at least
 // options.tip_persistence x the diameter that lie within `near`'s radius of
@@ -243,8 +263,7 @@ void tips_from_center(const MeshGraph& graph, const FeatureOptions& options, con
   for (Index v = 1; v < graph.num_vertices(); ++v)
     if (std::max(at(f1, v), at(f2, v)) < std::max(at(f1, center), at(f2, center))) center = v;
   out.center = center;
-  std::vector<double> fc = solver.run({center}).distance;
-  for (double& x : fc) x = std::round(x / (kTieGrid * out.diameter));
+  const std::vector<double> fc = snapped(solver.run({center}).distance, kTieGrid * out.diameter);
   std::vector<Index> tips = persistent_extrema(graph, fc, std::round(options.tip_persistence / kTieGrid));
   tips.erase(std::remove_if(tips.begin(), tips.end(),
                             [&](Index v) {
@@ -263,11 +282,7 @@ void tips_from_center(const MeshGraph& graph, const FeatureOptions& options, con
   for (const Index v : tips) {
     const bool end = v == out.source1 || v == out.source2;
     if (at(to_features, v) <= near.radius || (!end && !(at(to_extrema, v) <= near.radius))) continue;
-    out.vertices.push_back(v);
-    const DistanceField& ball = solver.run({v}, near);
-    for (const Index w : solver.settled())
-      to_features[static_cast<std::size_t>(w)] =
-          std::min(at(to_features, w), ball.distance[static_cast<std::size_t>(w)]);
+    take_feature_point(v, near, solver, out, to_features);
   }
 }
 
@@ -389,12 +404,7 @@ FeaturePoints extract_feature_points(const Mesh& mesh, const MeshGraph& graph, c
   // way and keeps its feature points (the invariance of sections 4.1.1 and 5.3; a
   // symmetric shape has many such ties). Sums of whole units are exact.
   const double unit = kTieGrid * out.diameter;
-  const auto snapped = [unit](std::vector<double> f) {
-    if (unit > 0.0)
-      for (double& x : f) x = std::round(x / unit);
-    return f;
-  };
-  const std::vector<double> f1 = snapped(ends.f1), f2 = snapped(ends.f2);
+  const std::vector<double> f1 = snapped(ends.f1, unit), f2 = snapped(ends.f2, unit);
   out.f1 = std::move(ends.f1);
   out.f2 = std::move(ends.f2);
 
@@ -422,7 +432,7 @@ FeaturePoints extract_feature_points(const Mesh& mesh, const MeshGraph& graph, c
   std::vector<Index> nearest_e1, nearest_e2;
   const auto reach = [&](const std::vector<Index>& sources, std::vector<double>& to, std::vector<Index>& nearest) {
     const DistanceField& field = solver.run(sources, near);
-    to = snapped(field.distance);
+    to = snapped(field.distance, unit);
     nearest = field.nearest_source;
   };
   reach(out.extrema1, to_e1, nearest_e1);
@@ -456,11 +466,7 @@ FeaturePoints extract_feature_points(const Mesh& mesh, const MeshGraph& graph, c
       if (a != b) site = geodesic_midpoint(solver, a, b, (at(to_e1, v) + at(to_e2, v) + 2) * unit, unit, f1, f2, v);
       if (at(to_features, site) <= radius) continue;
     }
-    out.vertices.push_back(site);
-    const DistanceField& ball = solver.run({site}, near);
-    for (const Index w : solver.settled())
-      to_features[static_cast<std::size_t>(w)] =
-          std::min(at(to_features, w), ball.distance[static_cast<std::size_t>(w)]);
+    take_feature_point(site, near, solver, out, to_features);
   }
   if (options.protrusion_persistence > 0.0) add_protrusion_tips(graph, options, f1, f2, solver, out);
   return out;
