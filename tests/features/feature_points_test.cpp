@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <iterator>
 #include <string>
 #include <utility>
 
@@ -471,21 +472,31 @@ TEST(FeaturePoints, TheCenterRuleFindsOnePointPerArmTipSeenFromTheHub) {
   }
 }
 
-// The rule compares distances on the tie grid: a rotated, moved and scaled
-// copy gets the same centre and the same points.
-TEST(FeaturePoints, TheCenterRuleIsInvariantToRotationTranslationAndScale) {
+// Both rules of the centre compare distances on the tie grid: a rotated,
+// moved and scaled copy gets the same centre and the same points (under
+// Confirmed at a threshold where some of eq. 6's points are dropped).
+TEST(FeaturePoints, TheCenterRulesAreInvariantToRotationTranslationAndScale) {
   const Mesh mesh = make_star(star(6));
   FeatureOptions center;
   center.rule = FeatureRule::Center;
-  const FeaturePoints reference = features_of(mesh, center);
-  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
-    Similarity t;
-    t.rotation = random_rotation(seed);
-    t.scale = 0.01 * static_cast<double>(seed * seed * seed * 10);
-    t.translation = Vec3(3.0, -7.0, 1e3) * static_cast<double>(seed);
-    const FeaturePoints copy = features_of(transformed(mesh, t), center);
-    EXPECT_EQ(copy.vertices, reference.vertices) << "seed " << seed;
-    EXPECT_EQ(copy.center, reference.center) << "seed " << seed;
+  FeatureOptions confirmed;
+  confirmed.rule = FeatureRule::Confirmed;
+  confirmed.tip_persistence = 0.4;
+  for (const FeatureOptions& options : {center, confirmed}) {
+    SCOPED_TRACE(feature_rule_name(options.rule));
+    const FeaturePoints reference = features_of(mesh, options);
+    if (options.rule == FeatureRule::Confirmed) {
+      ASSERT_LT(reference.vertices.size(), features_of(mesh).vertices.size());
+    }
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+      Similarity t;
+      t.rotation = random_rotation(seed);
+      t.scale = 0.01 * static_cast<double>(seed * seed * seed * 10);
+      t.translation = Vec3(3.0, -7.0, 1e3) * static_cast<double>(seed);
+      const FeaturePoints copy = features_of(transformed(mesh, t), options);
+      EXPECT_EQ(copy.vertices, reference.vertices) << "seed " << seed;
+      EXPECT_EQ(copy.center, reference.center) << "seed " << seed;
+    }
   }
 }
 
@@ -507,8 +518,55 @@ TEST(FeaturePoints, TheCenterRuleKeepsTheTipsOfProtrusionsLongerThanTheThreshold
   EXPECT_EQ(fewer.vertices[2], all.vertices[2]);  // the farthest from the centre comes first after the ends
 }
 
+// Eq. (6) confirmed by the centre: where the centre sees the tip of every
+// arm (each arm persists far above the threshold), no point of eq. (6) is
+// dropped.
+TEST(FeaturePoints, TheConfirmedRuleKeepsEveryPointOfEq6WhereTheCentreSeesEveryTip) {
+  FeatureOptions confirmed;
+  confirmed.rule = FeatureRule::Confirmed;
+  for (const int arms : {2, 3, 5, 8, 12}) {
+    SCOPED_TRACE(std::to_string(arms) + " arms");
+    const Mesh mesh = make_star(star(arms));
+    const FeaturePoints paper = features_of(mesh), fp = features_of(mesh, confirmed);
+    EXPECT_EQ(fp.vertices.size(), static_cast<std::size_t>(arms));
+    EXPECT_EQ(fp.vertices, paper.vertices);
+    EXPECT_NE(fp.center, kInvalidIndex);
+  }
+}
+
+// Above an arm's length the only tip left is f_c's global maximum, which
+// never merges into a higher one: eq. (6)'s points are kept at the ends of
+// the diameter and within epsilon of that tip, and the other arms' are
+// dropped, in eq. (6)'s order.
+TEST(FeaturePoints, TheConfirmedRuleDropsThePointsNoTipConfirms) {
+  const Mesh mesh = make_star(star(5));
+  const FeaturePoints paper = features_of(mesh);
+  ASSERT_EQ(paper.vertices.size(), 5u);
+  FeatureOptions confirmed;
+  confirmed.rule = FeatureRule::Confirmed;
+  confirmed.tip_persistence = 0.6;  // an arm is less than half the diameter
+  const FeaturePoints fewer = features_of(mesh, confirmed);
+  ASSERT_EQ(fewer.vertices.size(), 3u);
+  EXPECT_EQ(std::count(fewer.vertices.begin(), fewer.vertices.end(), paper.source1), 1);
+  EXPECT_EQ(std::count(fewer.vertices.begin(), fewer.vertices.end(), paper.source2), 1);
+  std::vector<Index> kept;  // eq. (6)'s points that are kept, in its order
+  std::copy_if(paper.vertices.begin(), paper.vertices.end(), std::back_inserter(kept),
+               [&](Index v) { return std::count(fewer.vertices.begin(), fewer.vertices.end(), v) > 0; });
+  EXPECT_EQ(kept, fewer.vertices);
+  // The third is the one near the tip the centre rule takes after the ends.
+  FeatureOptions center = confirmed;
+  center.rule = FeatureRule::Center;
+  const FeaturePoints tips = features_of(mesh, center);
+  ASSERT_EQ(tips.vertices.size(), 3u);
+  const DistanceField d = fast_marching(build_mesh_graph(mesh), tips.vertices[2]);
+  for (const Index v : fewer.vertices) {
+    if (v == paper.source1 || v == paper.source2) continue;
+    EXPECT_LT(d.distance[static_cast<std::size_t>(v)], 0.15 * fewer.diameter);
+  }
+}
+
 TEST(FeaturePoints, FeatureRuleNamesRoundTrip) {
-  for (const FeatureRule rule : {FeatureRule::Intersection, FeatureRule::Center})
+  for (const FeatureRule rule : {FeatureRule::Intersection, FeatureRule::Center, FeatureRule::Confirmed})
     EXPECT_EQ(parse_feature_rule(feature_rule_name(rule)), rule);
   EXPECT_THROW(parse_feature_rule("centre"), InvalidArgument);
 }

@@ -24,9 +24,10 @@ constexpr NamedValues<DiameterStart, 2> kDiameterStartNames{"diameter start",
                                                             {{{DiameterStart::Vertex, "vertex"},
                                                               {DiameterStart::Centroid, "centroid"}}}};
 
-constexpr NamedValues<FeatureRule, 2> kFeatureRuleNames{"feature rule",
+constexpr NamedValues<FeatureRule, 3> kFeatureRuleNames{"feature rule",
                                                         {{{FeatureRule::Intersection, "intersection"},
-                                                          {FeatureRule::Center, "center"}}}};
+                                                          {FeatureRule::Center, "center"},
+                                                          {FeatureRule::Confirmed, "confirmed"}}}};
 
 constexpr NamedValues<FeatureSite, 2> kFeatureSiteNames{"feature site",
                                                         {{{FeatureSite::Extremum, "extremum"},
@@ -248,17 +249,18 @@ void take_feature_point(Index v, const GeodesicOptions& near, GeodesicSolver& so
   }
 }
 
-// FeatureRule::Center on the snapped f1 and f2 (whole units of the tie
-// grid): the ends s1 and s2, then the maxima of f_c persisting at least
-// options.tip_persistence x the diameter that lie within `near`'s radius of
-// an extremum of f1 or f2 (out.extrema1, out.extrema2), the farthest from the
-// centre first (ties: the smaller id), each where no feature point lies
-// within that radius.
-void tips_from_center(const MeshGraph& graph, const FeatureOptions& options, const std::vector<double>& f1,
-                      const std::vector<double>& f2, const GeodesicOptions& near, GeodesicSolver& solver,
-                      FeaturePoints& out) {
+// The tips seen from the centre of the diameter (the vertex of smallest
+// max(f1, f2) on the snapped f1 and f2, ties to the smaller id, stored in
+// out.center): the local maxima of f_c, the distance from it, persisting at
+// least options.tip_persistence x the diameter, other than the ends s1 and
+// s2, the farthest from the centre first (ties: the smaller id). The centre
+// lies on the bulk of the shape whichever pair of ends is the diameter, and
+// from there the tip of every protrusion longer than the threshold is a
+// maximum.
+std::vector<Index> tips_from_center(const MeshGraph& graph, const FeatureOptions& options,
+                                    const std::vector<double>& f1, const std::vector<double>& f2,
+                                    GeodesicSolver& solver, FeaturePoints& out) {
   const auto at = [](const std::vector<double>& a, Index v) { return a[static_cast<std::size_t>(v)]; };
-  // The centre: the smallest max(f1, f2), ties to the smaller id.
   Index center = 0;
   for (Index v = 1; v < graph.num_vertices(); ++v)
     if (std::max(at(f1, v), at(f2, v)) < std::max(at(f1, center), at(f2, center))) center = v;
@@ -272,8 +274,20 @@ void tips_from_center(const MeshGraph& graph, const FeatureOptions& options, con
              tips.end());
   std::sort(tips.begin(), tips.end(),
             [&](Index a, Index b) { return std::make_pair(-at(fc, a), a) < std::make_pair(-at(fc, b), b); });
+  return tips;
+}
+
+// FeatureRule::Center: the ends s1 and s2, then the centre's tips that lie
+// within `near`'s radius of an extremum of f1 or f2 (out.extrema1,
+// out.extrema2), in tips_from_center's order, each where no feature point
+// lies within that radius.
+void center_feature_points(const MeshGraph& graph, const FeatureOptions& options, const std::vector<double>& f1,
+                           const std::vector<double>& f2, const GeodesicOptions& near, GeodesicSolver& solver,
+                           FeaturePoints& out) {
+  const auto at = [](const std::vector<double>& a, Index v) { return a[static_cast<std::size_t>(v)]; };
+  std::vector<Index> tips = tips_from_center(graph, options, f1, f2, solver, out);
   tips.insert(tips.begin(), {out.source1, out.source2});
-  std::vector<double> to_features(fc.size(), std::numeric_limits<double>::infinity());
+  std::vector<double> to_features(f1.size(), std::numeric_limits<double>::infinity());
   // A maximum of f_c far from every extremum of f1 and f2 is where the
   // fronts from the centre meet around the bulk (its antipode), not a tip.
   std::vector<Index> extrema = out.extrema1;
@@ -423,7 +437,7 @@ FeaturePoints extract_feature_points(const Mesh& mesh, const MeshGraph& graph, c
   GeodesicOptions near{radius};
   near.separate_sources = true;  // the extrema are points
   if (options.rule == FeatureRule::Center) {
-    tips_from_center(graph, options, f1, f2, near, solver, out);
+    center_feature_points(graph, options, f1, f2, near, solver, out);
     if (options.protrusion_persistence > 0.0) add_protrusion_tips(graph, options, f1, f2, solver, out);
     return out;
   }
@@ -446,6 +460,18 @@ FeaturePoints extract_feature_points(const Mesh& mesh, const MeshGraph& graph, c
                                     return !(at(to_e1, v) < radius_units && at(to_e2, v) < radius_units);
                                   }),
                    candidates.end());
+  if (options.rule == FeatureRule::Confirmed) {
+    // Only where one of the centre's tips lies within epsilon (the ends of
+    // the diameter are kept): a small protrusion that this pair of ends
+    // makes an extremum of both functions, and another pair would not, is
+    // not a tip from the centre, which the pose does not move off the bulk.
+    const std::vector<Index> tips = tips_from_center(graph, options, f1, f2, solver, out);
+    std::vector<double> to_tips(static_cast<std::size_t>(n), std::numeric_limits<double>::infinity());
+    if (!tips.empty()) to_tips = snapped(solver.run(tips, near).distance, unit);
+    candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
+                                    [&](Index v) { return v != s1 && v != s2 && !(at(to_tips, v) < radius_units); }),
+                     candidates.end());
+  }
   // Greedy order: extrema of both functions first (gap 0), then the closest
   // pairs; among equals the more extreme vertex (larger f1 + f2), then the id.
   std::sort(candidates.begin(), candidates.end(), [&](Index a, Index b) {

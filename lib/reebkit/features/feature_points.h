@@ -46,9 +46,17 @@ enum class FeatureRule {
   /// points under resampling (docs/results.md, "The tips seen from the
   /// centre").
   Center,
+  /// Eq. (6) confirmed by the centre: the points of eq. (6), each kept only
+  /// where one of the tips seen from the centre (as under Center, without
+  /// the test against f1 and f2) lies within epsilon; the diameter ends are
+  /// always kept. A protrusion that one pair of ends makes an extremum of
+  /// both functions, and another pair of the same articulated shape would
+  /// not, is dropped unless the centre sees its tip. One full pass more than
+  /// eq. (6) (f_c) and one ball from the tips.
+  Confirmed,
 };
 
-/// "intersection" or "center": the names of the option --feature-rule.
+/// "intersection", "center" or "confirmed": the names of the option --feature-rule.
 const char* feature_rule_name(FeatureRule rule);
 /// Inverse of feature_rule_name; throws InvalidArgument naming the accepted values.
 FeatureRule parse_feature_rule(const std::string& name);
@@ -147,9 +155,10 @@ struct FeatureOptions {
   /// halfway between their two extrema").
   FeatureSite site = FeatureSite::Midpoint;
   /// Which rule chooses the feature points: eq. (6) (Intersection, the
-  /// paper's) or the tips seen from the centre (Center).
+  /// paper's), the tips seen from the centre (Center) or eq. (6) confirmed
+  /// by them (Confirmed).
   FeatureRule rule = FeatureRule::Intersection;
-  /// FeatureRule::Center: the persistence of a maximum of f_c, as a share of
+  /// FeatureRule::Center and Confirmed: the persistence of a maximum of f_c, as a share of
   /// the diameter, that makes it a tip (a protrusion at least that long
   /// beyond where it joins the rest). Unused by eq. (6). In [0, 1].
   double tip_persistence = 0.08;
@@ -174,8 +183,8 @@ struct FeaturePoints {
   std::vector<Index> extrema1;
   /// E2: local minima and maxima of f2 (with persistence >= min_persistence x diameter)
   std::vector<Index> extrema2;
-  /// FeatureRule::Center: the centre of the diameter, source of f_c;
-  /// kInvalidIndex under eq. (6).
+  /// FeatureRule::Center and Confirmed: the centre of the diameter, source
+  /// of f_c; kInvalidIndex under eq. (6).
   Index center = kInvalidIndex;
   int sweeps = 0;  ///< full geodesic passes spent finding v_s1, v_s2, f1 and f2
   /// The method of f1, f2 and the epsilon balls (FeatureOptions::geodesic).

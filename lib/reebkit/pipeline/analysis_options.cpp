@@ -81,9 +81,10 @@ const std::vector<AnalysisOptionField>& analysis_option_fields() {
       field("feature_rule", "how the feature points are chosen: intersection (eq. 6, the relaxed intersection of "
             "the extrema of f1 and f2, the default) or center (the diameter ends and the maxima of the distance "
             "from the centre of the diameter persisting at least tip_persistence and within epsilon of an extremum "
-            "of f1 or f2, epsilon apart)",
+            "of f1 or f2, epsilon apart) or confirmed (the points of eq. 6 that lie within epsilon of such a "
+            "maximum, and the diameter ends)",
             [](auto& o) -> auto& { return o.features.rule; }),
-      field("tip_persistence", "feature_rule center: the persistence, as a fraction of the geodesic diameter, "
+      field("tip_persistence", "feature_rule center or confirmed: the persistence, as a fraction of the geodesic diameter, "
             "from which a maximum of the distance from the centre is a tip",
             [](auto& o) -> auto& { return o.features.tip_persistence; }, OptionRange{0, 1}),
       field("level_lines", "what a level line is: contour (the connected curves of the propagation front, exact "
