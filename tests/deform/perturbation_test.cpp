@@ -17,14 +17,14 @@ TEST(Perturbation, EachKindIsItsFunctionWithACorrespondence) {
   const Mesh mesh = make_star(StarOptions{3, 2});
   const MeshAnalysis analysis = analyze_mesh(mesh);
   const auto n = mesh.num_vertices();
-  const MeshVariant decimated = perturb_mesh(mesh, Perturbation{PerturbationKind::Decimate, 0.5, {}, 1});
+  const MeshVariant decimated = perturb_mesh(mesh, Perturbation{PerturbationKind::Decimate, 0.5, {}, 1, {}});
   EXPECT_EQ(decimated.mesh.num_vertices(), decimate_mesh(mesh, DecimationOptions{0.5, 0.02}).mesh.num_vertices());
-  const MeshVariant noisy = perturb_mesh(mesh, Perturbation{PerturbationKind::Noise, 0.01, {}, 7});
+  const MeshVariant noisy = perturb_mesh(mesh, Perturbation{PerturbationKind::Noise, 0.01, {}, 7, {}});
   EXPECT_TRUE(noisy.mesh.vertices == add_normal_noise(mesh, NoiseOptions{0.01, 7, NoiseShape::Gaussian}).vertices);
-  const MeshVariant subdivided = perturb_mesh(mesh, Perturbation{PerturbationKind::Subdivide, 1, {}, 1});
+  const MeshVariant subdivided = perturb_mesh(mesh, Perturbation{PerturbationKind::Subdivide, 1, {}, 1, {}});
   EXPECT_GT(subdivided.mesh.num_vertices(), n);
   std::vector<std::string> notes;
-  const MeshVariant posed = perturb_mesh(mesh, Perturbation{PerturbationKind::Pose, 0, {}, 3}, &analysis, &notes);
+  const MeshVariant posed = perturb_mesh(mesh, Perturbation{PerturbationKind::Pose, 0, {}, 3, {}}, &analysis, &notes);
   EXPECT_EQ(posed.mesh.num_vertices(), n);
   ASSERT_FALSE(notes.empty());
   EXPECT_NE(notes.back().find("leaf component(s) turned by"), std::string::npos) << notes.back();
@@ -35,7 +35,7 @@ TEST(Perturbation, EachKindIsItsFunctionWithACorrespondence) {
       EXPECT_LT(o, n);
     }
   }
-  EXPECT_THROW(perturb_mesh(mesh, Perturbation{PerturbationKind::Pose, 0, {}, 3}), InvalidArgument);
+  EXPECT_THROW(perturb_mesh(mesh, Perturbation{PerturbationKind::Pose, 0, {}, 3, {}}), InvalidArgument);
 }
 
 }  // namespace

@@ -100,6 +100,40 @@ TEST(ReebPerturbCli, ThePoseIsPlannedOnTheGraphOfTheAnalysisOptions) {
   EXPECT_GT((toe_scale - defaults).rowwise().norm().maxCoeff(), 0.01);
 }
 
+// --pose-leaves and --pose-degrees: no turn or a zero angle leaves every
+// vertex where it was; four leaves move more vertices than two, larger
+// angles move them farther.
+TEST(ReebPerturbCli, ThePoseTurnsAsManyLeavesAsAskedByTheAnglesAsked) {
+  TempDir dir;
+  const std::filesystem::path input = embedded_dataset_dir() / "elk.off";
+  const Points original = read_vertices(input);
+  const auto moved = [&](const std::string& options) {  // how far each vertex moved
+    const std::filesystem::path out = dir / "posed.off";
+    const auto [status, output] = run_command(std::string(REEB_BINARY) + " perturb " + shell_quoted(input) + " -o " +
+                                              shell_quoted(out) + " --pose 3 " + options);
+    EXPECT_EQ(status, 0) << options << "\n" << output;
+    const Points posed = read_vertices(out);
+    EXPECT_EQ(posed.rows(), original.rows()) << options;
+    return Eigen::VectorXd((posed - original).rowwise().norm());
+  };
+  const double diagonal = (original.colwise().maxCoeff() - original.colwise().minCoeff()).norm();
+  const auto count_moved = [&](const Eigen::VectorXd& d) { return (d.array() > 1e-9 * diagonal).count(); };
+  EXPECT_EQ(count_moved(moved("--pose-leaves 0")), 0);
+  EXPECT_EQ(count_moved(moved("--pose-degrees 0:0")), 0);
+  const Eigen::VectorXd two = moved(""), four = moved("--pose-leaves 4");
+  EXPECT_GT(count_moved(two), 0);
+  EXPECT_GT(count_moved(four), count_moved(two));
+  EXPECT_GT(moved("--pose-leaves 4 --pose-degrees 60:60").maxCoeff(),
+            moved("--pose-leaves 4 --pose-degrees 10:10").maxCoeff());
+  for (const std::string bad :
+       {"--pose-degrees 30", "--pose-degrees 40:30", "--pose-degrees 0:200", "--pose-leaves -1"})
+    EXPECT_NE(run_command(std::string(REEB_BINARY) + " perturb " + shell_quoted(input) + " -o " +
+                          shell_quoted(dir / "bad.off") + " --pose 3 " + bad)
+                  .first,
+              0)
+        << bad;
+}
+
 TEST(ReebPerturbCli, RotationScaleTranslationAreExact) {
   TempDir dir;
   const std::filesystem::path input = embedded_dataset_dir() / "cactus.off";

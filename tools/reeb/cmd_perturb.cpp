@@ -50,6 +50,15 @@ Eigen::Matrix3d parse_rotation(const std::string& text, std::uint64_t seed) {
   return Eigen::AngleAxisd(degrees * M_PI / 180.0, axis.normalized()).toRotationMatrix();
 }
 
+/// "MIN:MAX" -> the pose's angle range in degrees, 0 <= MIN <= MAX <= 180.
+void parse_degrees(const std::string& text, PoseOptions& pose) {
+  std::istringstream in(text);
+  char colon = 0;
+  if (!(in >> pose.min_degrees >> colon >> pose.max_degrees) || colon != ':' || !(in >> std::ws).eof() ||
+      !(0.0 <= pose.min_degrees && pose.min_degrees <= pose.max_degrees && pose.max_degrees <= 180.0))
+    throw po::error("--pose-degrees takes MIN:MAX, 0 <= MIN <= MAX <= 180, not '" + text + "'");
+}
+
 /// Composes one step's correspondence into the running one: vertex v of the
 /// step's result stands for original[step[v]].
 void compose(std::vector<Index>& original, const std::vector<Index>& step) {
@@ -66,6 +75,10 @@ int run_perturb(const std::vector<std::string>& args) {
   double scale = 1.0, noise = 0.0, decimate = 1.0;
   int subdivide = 0;
   std::uint64_t seed = 1, pose_seed = 0;
+  PoseOptions pose;
+  std::ostringstream default_degrees;
+  default_degrees << pose.min_degrees << ":" << pose.max_degrees;
+  std::string pose_degrees = default_degrees.str();
   options.add_options()("mesh", po::value(&mesh_path)->required(),
                         "mesh file (.off .obj .ply .stl); its largest component is perturbed")(
       "output,o", po::value(&out_path)->required(),
@@ -84,7 +97,11 @@ int run_perturb(const std::vector<std::string>& args) {
       "a new triangulation sharing no vertex: N_VERTICES (an integer) or TARGET_EDGE (a number with a decimal point)")(
       "subdivide", po::value(&subdivide)->default_value(subdivide), "rounds of 1-to-4 midpoint subdivision")(
       "pose", po::value(&pose_seed),
-      "turn up to 2 leaf components of the Reeb graph by 20-35 degrees, picked by this seed (section 5.2)")(
+      "turn up to --pose-leaves leaf components of the Reeb graph by --pose-degrees, picked by this seed "
+      "(section 5.2)")("pose-leaves", po::value(&pose.leaves)->default_value(pose.leaves),
+                       "how many of the four largest leaves (by area) --pose turns")(
+      "pose-degrees", po::value(&pose_degrees)->default_value(pose_degrees),
+      "MIN:MAX, the range of the angles --pose turns by, either way")(
       "seed", po::value(&seed)->default_value(seed), "seed of the random rotation, noise and remeshing");
   AnalysisOptions pose_graph;  // the analysis of the graph whose leaves --pose turns
   options.add(analysis_options(pose_graph));
@@ -93,13 +110,16 @@ int run_perturb(const std::vector<std::string>& args) {
   po::variables_map vm;
   if (!parse(args,
              "reeb perturb MESH -o OUT [--rotate random|AXIS:DEG] [--scale S] [--translate X,Y,Z] [--noise SIGMA] "
-             "[--decimate RATIO] [--remesh N_VERTICES|TARGET_EDGE] [--subdivide K] [--pose SEED] [--seed N] "
+             "[--decimate RATIO] [--remesh N_VERTICES|TARGET_EDGE] [--subdivide K] [--pose SEED [--pose-leaves K] "
+             "[--pose-degrees MIN:MAX]] [--seed N] "
              "[analysis options]",
              options, positional, vm))
     return 0;
   if (!(scale > 0.0 && std::isfinite(scale))) throw po::error("--scale must be a finite number > 0");
   if (!(noise >= 0.0 && std::isfinite(noise))) throw po::error("--noise must be a finite number >= 0");
   if (subdivide < 0) throw po::error("--subdivide must be >= 0");
+  if (pose.leaves < 0) throw po::error("--pose-leaves must be >= 0");
+  parse_degrees(pose_degrees, pose);
   if (correspondence_path.empty())
     correspondence_path = std::filesystem::path(out_path).replace_extension(".corr").string();
   check_outputs({out_path, correspondence_path}, {mesh_path});
@@ -139,13 +159,13 @@ int run_perturb(const std::vector<std::string>& args) {
   };
   if (vm.count("pose")) {
     const MeshAnalysis planned = analyze_mesh(original, pose_graph);
-    step("pose", Perturbation{PerturbationKind::Pose, 0, {}, pose_seed}, &planned);
+    step("pose", Perturbation{PerturbationKind::Pose, 0, {}, pose_seed, pose}, &planned);
   }
-  if (decimate != 1.0) step("decimate", Perturbation{PerturbationKind::Decimate, decimate, {}, seed});
-  if (!remesh_text.empty()) step("remesh", Perturbation{PerturbationKind::Remesh, 0, remesh_options, seed});
+  if (decimate != 1.0) step("decimate", Perturbation{PerturbationKind::Decimate, decimate, {}, seed, {}});
+  if (!remesh_text.empty()) step("remesh", Perturbation{PerturbationKind::Remesh, 0, remesh_options, seed, {}});
   if (subdivide > 0)
-    step("subdivide", Perturbation{PerturbationKind::Subdivide, static_cast<double>(subdivide), {}, seed});
-  if (noise > 0.0) step("noise", Perturbation{PerturbationKind::Noise, noise, {}, seed});
+    step("subdivide", Perturbation{PerturbationKind::Subdivide, static_cast<double>(subdivide), {}, seed, {}});
+  if (noise > 0.0) step("noise", Perturbation{PerturbationKind::Noise, noise, {}, seed, {}});
   mesh = transformed(mesh, similarity);
 
   write_mesh(out_path, mesh);

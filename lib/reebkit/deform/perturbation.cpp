@@ -1,7 +1,6 @@
 #include "reebkit/deform/perturbation.h"
 
 #include "reebkit/core/error.h"
-#include "reebkit/deform/pose.h"
 #include "reebkit/mesh/decimation.h"
 #include "reebkit/mesh/hole_filling.h"
 #include "reebkit/mesh/resampling.h"
@@ -21,7 +20,7 @@ MeshVariant perturb_mesh(const Mesh& mesh, const Perturbation& p, const MeshAnal
     case PerturbationKind::Pose: break;
   }
   if (!analysis) throw InvalidArgument("perturb_mesh: a pose needs the analysis of the mesh");
-  PoseOptions options;
+  PoseOptions options = p.pose;
   options.seed = p.seed;
   const RandomPose pose = random_pose(*analysis, options);
   if (notes) {

@@ -6,6 +6,7 @@
 // mesh/transform.h, deform/pose.h); this picks one by kind.
 #pragma once
 
+#include "reebkit/deform/pose.h"
 #include "reebkit/mesh/remeshing.h"
 #include "reebkit/mesh/surface_correspondence.h"
 #include "reebkit/pipeline/analyze_mesh.h"
@@ -27,6 +28,8 @@ struct Perturbation {
   double amount = 0;
   RemeshOptions remesh;    ///< Remesh: the target vertex count or edge length, and the seed
   std::uint64_t seed = 1;  ///< Noise: the seed of the noise; Pose: of the turned leaves (random_pose)
+  /// Pose: how many leaves turn and by how much (its own seed unused: `seed` is).
+  PoseOptions pose;
 };
 
 /// `mesh` perturbed by `p`, original_vertex[v] the vertex of `mesh` that
