@@ -166,7 +166,7 @@ MeshVariant perturb(const Mesh& mesh, const MeshAnalysis& analysis, const Sampli
                  : p.kind == "subdivide" ? K::Subdivide
                  : p.kind == "noise"     ? K::Noise
                                          : K::Pose;
-  reebkit::Perturbation step{kind, p.strength, {}, kind == K::Pose ? static_cast<std::uint64_t>(p.strength) : 1};
+  reebkit::Perturbation step{kind, p.strength, {}, kind == K::Pose ? static_cast<std::uint64_t>(p.strength) : 1, {}};
   step.remesh.target_vertices = static_cast<Index>(std::lround(p.strength * mesh.num_vertices()));
   return perturb_mesh(mesh, step, &analysis);
 }
