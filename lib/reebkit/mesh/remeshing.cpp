@@ -39,31 +39,22 @@ Points vertex_normals(const Mesh& mesh) {
   return normals;
 }
 
-}  // namespace
+// How many dense samplings remesh tries before it gives up.
+constexpr int kRemeshAttempts = 4;
 
-MeshVariant remesh(const Mesh& mesh, const RemeshOptions& options) {
-  const Index target = target_count(mesh, options);
-  if (target < 4)
-    throw InvalidArgument(mesh.source + ": remeshing target of " + std::to_string(target) + " vertices is below 4");
-  if (options.smoothing_iterations < 0 || !(options.smoothing_step >= 0.0 && options.smoothing_step <= 1.0))
-    throw InvalidArgument(mesh.source + ": negative smoothing iterations or a smoothing step outside [0, 1]");
-  if (!(options.min_triangle_area >= 0.0 && options.min_triangle_area < 1.0))
-    throw InvalidArgument(mesh.source + ": smallest triangle area " + std::to_string(options.min_triangle_area) +
-                          " x the mean is outside [0, 1)");
-  const std::string with_seed = "remeshing with seed " + std::to_string(options.seed) + ": ";
-  const SurfaceLocator original(mesh);
-
-  Mesh dense = resample_mesh(mesh, ResamplingOptions{0.2, options.seed});
-  for (std::uint64_t round = 1; dense.num_vertices() < 4 * static_cast<std::int64_t>(target); ++round)
-    dense = resample_mesh(dense, ResamplingOptions{0.2, options.seed + round});
+// One remeshing of `mesh` (remesh, below) from the dense sampling of `seed`;
+// InvalidMeshError where a degenerate triangle is left that no flip or
+// collapse removes.
+MeshVariant remesh_from(const Mesh& mesh, const RemeshOptions& options, Index target, std::uint64_t seed,
+                        const SurfaceLocator& original) {
   MeshVariant out;
-  try {
-    out.mesh = decimate_mesh(dense, DecimationOptions{static_cast<double>(target) / dense.num_vertices(), 0.02,
-                                                      options.min_triangle_area})
-                   .mesh;
-  } catch (const InvalidMeshError& e) {
-    throw InvalidMeshError(mesh.source, with_seed + e.what());
-  }
+
+  Mesh dense = resample_mesh(mesh, ResamplingOptions{0.2, seed});
+  for (std::uint64_t round = 1; dense.num_vertices() < 4 * static_cast<std::int64_t>(target); ++round)
+    dense = resample_mesh(dense, ResamplingOptions{0.2, seed + round});
+  out.mesh = decimate_mesh(dense, DecimationOptions{static_cast<double>(target) / dense.num_vertices(), 0.02,
+                                                    options.min_triangle_area})
+                 .mesh;
   out.mesh.source = mesh.source;
   Mesh& result = out.mesh;
 
@@ -101,7 +92,7 @@ MeshVariant remesh(const Mesh& mesh, const RemeshOptions& options) {
 
   TriangleRepair repaired = repair_degenerate_triangles(result, options.min_triangle_area);
   if (repaired.remaining > 0)
-    throw InvalidMeshError(mesh.source, with_seed + std::to_string(repaired.remaining) + " triangles of at most " +
+    throw InvalidMeshError(mesh.source, std::to_string(repaired.remaining) + " triangles of at most " +
                                             std::to_string(options.min_triangle_area) +
                                             " x the mean area are left that no edge flip or collapse removes");
   result = std::move(repaired.mesh);
@@ -109,6 +100,34 @@ MeshVariant remesh(const Mesh& mesh, const RemeshOptions& options) {
   for (Index v = 0; v < result.num_vertices(); ++v)
     out.original_vertex[static_cast<std::size_t>(v)] = original.nearest_vertex(result.vertices.row(v).transpose());
   return out;
+}
+
+}  // namespace
+
+MeshVariant remesh(const Mesh& mesh, const RemeshOptions& options) {
+  const Index target = target_count(mesh, options);
+  if (target < 4)
+    throw InvalidArgument(mesh.source + ": remeshing target of " + std::to_string(target) + " vertices is below 4");
+  if (options.smoothing_iterations < 0 || !(options.smoothing_step >= 0.0 && options.smoothing_step <= 1.0))
+    throw InvalidArgument(mesh.source + ": negative smoothing iterations or a smoothing step outside [0, 1]");
+  if (!(options.min_triangle_area >= 0.0 && options.min_triangle_area < 1.0))
+    throw InvalidArgument(mesh.source + ": smallest triangle area " + std::to_string(options.min_triangle_area) +
+                          " x the mean is outside [0, 1)");
+  const SurfaceLocator original(mesh);
+  // A sliver that no flip or collapse removes is rare and depends on the
+  // dense sampling: the remeshing is made again from other samplings, each
+  // drawn from the seed, so that the same seed still gives the same mesh.
+  std::string failures;
+  for (int attempt = 0; attempt < kRemeshAttempts; ++attempt) {
+    const std::uint64_t seed = options.seed + static_cast<std::uint64_t>(attempt) * 0x9E3779B97F4A7C15ULL;
+    try {
+      return remesh_from(mesh, options, target, seed, original);
+    } catch (const InvalidMeshError& e) {
+      failures += (attempt > 0 ? "; " : "") + e.problem();
+    }
+  }
+  throw InvalidMeshError(mesh.source, "remeshing with seed " + std::to_string(options.seed) + " failed " +
+                                          std::to_string(kRemeshAttempts) + " times: " + failures);
 }
 
 }  // namespace reebkit

@@ -51,8 +51,12 @@ struct RemeshOptions {
 /// unless the target is too small for the shape. original_vertex: the nearest
 /// original vertex on the surface.
 /// Throws InvalidArgument naming mesh.source for a target below 4 vertices,
-/// neither target given, or options out of range; InvalidMeshError naming
-/// mesh.source and the seed when a degenerate triangle cannot be repaired.
+/// neither target given, or options out of range. Where a degenerate
+/// triangle is left that no flip or collapse removes (rare; it depends on
+/// the dense sampling), the remeshing is made again from up to three other
+/// dense samplings drawn from the seed (the same seed, the same mesh; the
+/// first try is the seed's own); InvalidMeshError naming mesh.source, the
+/// seed and each try's problem where all four fail.
 MeshVariant remesh(const Mesh& mesh, const RemeshOptions& options);
 
 }  // namespace reebkit
