@@ -72,14 +72,11 @@ if [ "$(cat "$work/complete" 2> /dev/null)" != "$made" ]; then
   done > "$work/jobs.txt"
   echo "making $(wc -l < "$work/jobs.txt") posed and remeshed meshes in $work/meshes"
   # shellcheck disable=SC2016,SC2086
-  # A remeshing that fails (a sliver no flip or collapse removes, reported
-  # by remesh) is tried again with the next seed, twice at most.
+  # shellcheck disable=SC2016,SC2086
   SHREC=$shrec WORK=$work LEAVES=$leaves DEGREES=$degrees PLANNING_FLAGS="${planning[*]}" xargs -P "$threads" -L 1 bash -c \
-    'for s in "$5" $(($5 + 1)) $(($5 + 2)); do
-       "$0" perturb "$SHREC/$1.off" -o "$WORK/meshes/$2.off" --pose "$3" --remesh "$4" --seed "$s" \
-         --pose-leaves "$LEAVES" --pose-degrees "$DEGREES" \
-         --correspondence "$WORK/correspondence/$2.corr" $PLANNING_FLAGS > /dev/null && exit 0
-     done; exit 1' "$reeb" < "$work/jobs.txt"
+    '"$0" perturb "$SHREC/$1.off" -o "$WORK/meshes/$2.off" --pose "$3" --remesh "$4" --seed "$5" \
+       --pose-leaves "$LEAVES" --pose-degrees "$DEGREES" --correspondence "$WORK/correspondence/$2.corr" \
+       $PLANNING_FLAGS > /dev/null' "$reeb" < "$work/jobs.txt"
   echo "$made" > "$work/complete"
 fi
 
