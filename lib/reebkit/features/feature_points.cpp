@@ -229,6 +229,9 @@ Index geodesic_midpoint(GeodesicSolver& solver, Index a, Index b, double reach, 
   return best == kInvalidIndex ? fallback : best;
 }
 
+// a[v], for the per-vertex fields below.
+double at(const std::vector<double>& a, Index v) { return a[static_cast<std::size_t>(v)]; }
+
 // `f` counted in whole units of `unit` (kTieGrid x the diameter; f as it
 // is where the unit is 0): see extract_feature_points.
 std::vector<double> snapped(std::vector<double> f, double unit) {
@@ -260,7 +263,6 @@ void take_feature_point(Index v, const GeodesicOptions& near, GeodesicSolver& so
 std::vector<Index> tips_from_center(const MeshGraph& graph, const FeatureOptions& options,
                                     const std::vector<double>& f1, const std::vector<double>& f2,
                                     GeodesicSolver& solver, FeaturePoints& out) {
-  const auto at = [](const std::vector<double>& a, Index v) { return a[static_cast<std::size_t>(v)]; };
   Index center = 0;
   for (Index v = 1; v < graph.num_vertices(); ++v)
     if (std::max(at(f1, v), at(f2, v)) < std::max(at(f1, center), at(f2, center))) center = v;
@@ -284,7 +286,6 @@ std::vector<Index> tips_from_center(const MeshGraph& graph, const FeatureOptions
 void center_feature_points(const MeshGraph& graph, const FeatureOptions& options, const std::vector<double>& f1,
                            const std::vector<double>& f2, const GeodesicOptions& near, GeodesicSolver& solver,
                            FeaturePoints& out) {
-  const auto at = [](const std::vector<double>& a, Index v) { return a[static_cast<std::size_t>(v)]; };
   std::vector<Index> tips = tips_from_center(graph, options, f1, f2, solver, out);
   tips.insert(tips.begin(), {out.source1, out.source2});
   std::vector<double> to_features(f1.size(), std::numeric_limits<double>::infinity());
@@ -454,7 +455,6 @@ FeaturePoints extract_feature_points(const Mesh& mesh, const MeshGraph& graph, c
   std::vector<Index> candidates;
   std::set_union(out.extrema1.begin(), out.extrema1.end(), out.extrema2.begin(), out.extrema2.end(),
                  std::back_inserter(candidates));
-  const auto at = [](const std::vector<double>& a, Index v) { return a[static_cast<std::size_t>(v)]; };
   candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
                                   [&](Index v) {
                                     return !(at(to_e1, v) < radius_units && at(to_e2, v) < radius_units);
