@@ -66,3 +66,26 @@ all_distances() {
       env OMP_NUM_THREADS="$threads" "$baselines" "$meshes" "$cla" "$out/baseline"
   fi
 }
+
+# The analysis the pose benchmarks' meshes are planned on (the leaves `reeb
+# perturb --pose` turns, the parts body_shapes changes): layout 9's, pinned,
+# since a benchmark must not move with the defaults of the method it
+# measures. planning: NAME=VALUE, as body_shapes' --option takes them;
+# planning_options: those as --option pairs; planning_flags: the same as
+# reeb perturb's --name VALUE words.
+planning=(geodesic=fmm epsilon=0.15 min_persistence=0.03 feature_site=extremum diameter_start=vertex level_lines=contour leaves=maxima)
+planning_options=() planning_flags=""
+for planned in "${planning[@]}"; do
+  planning_options+=(--option "$planned")
+  planned_name=${planned%%=*}
+  planning_flags+=" --${planned_name//_/-} ${planned#*=}"
+done
+
+# SHREC 2007 Watertight's articulated classes, in the class file's order.
+articulated="Human Ant Octopus Teddy Hand Armadillo Fourleg"
+
+# shrec07_models CLASS: the model ids of CLASS in the SHREC07 class file
+# $shrec_cla.
+shrec07_models() {
+  awk -v c="$1" 'NF == 3 && $1 == c { n = $3; next } n > 0 && NF == 1 { print $1; n-- }' "$shrec_cla"
+}

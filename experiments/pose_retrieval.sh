@@ -86,18 +86,6 @@ shrec=$build/data/shrec07_watertight
 shrec_cla=$shrec/shrec07_watertight.cla
 work=$build/pose_retrieval
 body_shapes=$build/experiments/body_shapes
-# The analysis the benchmark meshes are planned on (the leaves --pose turns,
-# the parts body_shapes changes): layout 9's, pinned, since a benchmark must
-# not move with the defaults of the method it measures. The same options as
-# body_shapes' --option NAME=VALUE and as reeb perturb's --name VALUE.
-planning=(geodesic=fmm epsilon=0.15 min_persistence=0.03 feature_site=extremum diameter_start=vertex level_lines=contour leaves=maxima)
-planning_options=() planning_flags=""
-for option in "${planning[@]}"; do
-  planning_options+=(--option "$option")
-  name=${option%%=*}
-  planning_flags+=" --${name//_/-} ${option#*=}"
-done
-articulated="Human Ant Octopus Teddy Hand Armadillo Fourleg"
 tosca_classes="cat centaur dog horse michael"
 
 for name in $collections; do
@@ -133,11 +121,6 @@ tosca_classes_file() {
     blocks+=$'\n'"$name 0 $(echo "$models" | wc -l)"$'\n'"$models"$'\n'
   done
   printf 'PSB 1\n%d %d\n%s' "$(echo $tosca_classes | wc -w)" "$total" "$blocks" > "$out"
-}
-
-# shrec07_models CLASS: the model ids of CLASS in the SHREC07 class file.
-shrec07_models() {
-  awk -v c="$1" 'NF == 3 && $1 == c { n = $3; next } n > 0 && NF == 1 { print $1; n-- }' "$shrec_cla"
 }
 
 # shrec07_pose_collection: the posed meshes and their class file.

@@ -7,7 +7,7 @@
 # Octopus, Teddy, Hand, Armadillo, Fourleg; 140 models) in POSES (default 4)
 # random poses, `reeb perturb --pose 100 x ID + K --pose-leaves LEAVES
 # --pose-degrees DEGREES` (K = 1..POSES; the four largest limbs, LEAVES
-# default 4, of the pinned planning analysis of experiments/pose_retrieval.sh
+# default 4, of the pinned planning analysis of experiments/common.sh
 # turned by DEGREES, default 30:60; with pose_retrieval.sh's two limbs by
 # 20-35 degrees, 97.5 % of eq. (6)'s graphs keep their model's shape), each
 # pose remeshed on its own to N vertices, N drawn in [REMESH_MIN, REMESH_MAX]
@@ -50,15 +50,12 @@ shrec_cla=$shrec/shrec07_watertight.cla
 work=$build/pose_stability
 require_built "$reeb"
 require_unpacked "$shrec_cla"
-planning=(--geodesic fmm --epsilon 0.15 --min-persistence 0.03 --feature-site extremum --diameter-start vertex
-          --level-lines contour --leaves maxima)  # pose_retrieval.sh's pinned planning analysis
 
 made="poses $poses leaves $leaves degrees $degrees remesh $remesh_min-$remesh_max"
 if [ "$(cat "$work/complete" 2> /dev/null)" != "$made" ]; then
   rm -rf "$work"
   mkdir -p "$work/meshes" "$work/correspondence"
-  models=$(awk '$1 ~ /^(Human|Ant|Octopus|Teddy|Hand|Armadillo|Fourleg)$/ && NF == 3 { n = $3; next }
-                n > 0 && NF == 1 { print $1; n-- }' "$shrec_cla")
+  models=$(for class in $articulated; do shrec07_models "$class"; done)
   { printf 'PSB 1\n%d %d\n' "$(echo "$models" | wc -l)" "$(($(echo "$models" | wc -l) * poses))"
     for id in $models; do
       printf '\nm%s 0 %d\n' "$id" "$poses"
@@ -72,8 +69,7 @@ if [ "$(cat "$work/complete" 2> /dev/null)" != "$made" ]; then
   done > "$work/jobs.txt"
   echo "making $(wc -l < "$work/jobs.txt") posed and remeshed meshes in $work/meshes"
   # shellcheck disable=SC2016,SC2086
-  # shellcheck disable=SC2016,SC2086
-  SHREC=$shrec WORK=$work LEAVES=$leaves DEGREES=$degrees PLANNING_FLAGS="${planning[*]}" xargs -P "$threads" -L 1 bash -c \
+  SHREC=$shrec WORK=$work LEAVES=$leaves DEGREES=$degrees PLANNING_FLAGS=$planning_flags xargs -P "$threads" -L 1 bash -c \
     '"$0" perturb "$SHREC/$1.off" -o "$WORK/meshes/$2.off" --pose "$3" --remesh "$4" --seed "$5" \
        --pose-leaves "$LEAVES" --pose-degrees "$DEGREES" --correspondence "$WORK/correspondence/$2.corr" \
        $PLANNING_FLAGS > /dev/null' "$reeb" < "$work/jobs.txt"
