@@ -94,7 +94,7 @@ TEST(ReebPerturbCli, ThePoseIsPlannedOnTheGraphOfTheAnalysisOptions) {
     return read_vertices(out);
   };
   const Points defaults = posed("defaults", "");
-  EXPECT_EQ(posed("spelled_out", "--epsilon 0.15 --min-persistence 0.03 --feature-site midpoint"), defaults);
+  EXPECT_EQ(posed("spelled_out", "--epsilon 0.15 --min-persistence 0.03 --feature-site tips"), defaults);
   const Points toe_scale = posed("toe_scale", "--epsilon 0.05 --min-persistence 0.01");
   ASSERT_EQ(toe_scale.rows(), defaults.rows());
   EXPECT_GT((toe_scale - defaults).rowwise().norm().maxCoeff(), 0.01);

@@ -70,12 +70,12 @@ TEST(AnalysisOptions, NamedOptionsRoundTrip) {
   EXPECT_FALSE(analysis_options_from({}).spectra.regions);
   EXPECT_EQ(analysis_options_from({}).reeb.level_lines, LevelLines::Contour);
   EXPECT_EQ(analysis_options_from({}).reeb.leaves, Leaves::Maxima);
-  EXPECT_EQ(analysis_options_from({}).features.site, FeatureSite::Midpoint);
+  EXPECT_EQ(analysis_options_from({}).features.site, FeatureSite::Tips);
   EXPECT_EQ(analysis_options_from({}).features.start, DiameterStart::Centroid);
   const AnalysisOptions partial = analysis_options_from({{"epsilon", 0.2},
                                                          {"level_lines", std::string("contour")},
                                                          {"leaves", std::string("maxima")},
-                                                         {"feature_site", std::string("midpoint")},
+                                                         {"feature_site", std::string("tips")},
                                                          {"diameter_start", std::string("centroid")},
                                                          {"region_spectra", std::int64_t{0}}});
   EXPECT_EQ(partial.features.epsilon, 0.2);

@@ -29,9 +29,10 @@ constexpr NamedValues<FeatureRule, 3> kFeatureRuleNames{"feature rule",
                                                           {FeatureRule::Center, "center"},
                                                           {FeatureRule::Confirmed, "confirmed"}}}};
 
-constexpr NamedValues<FeatureSite, 2> kFeatureSiteNames{"feature site",
+constexpr NamedValues<FeatureSite, 3> kFeatureSiteNames{"feature site",
                                                         {{{FeatureSite::Extremum, "extremum"},
-                                                          {FeatureSite::Midpoint, "midpoint"}}}};
+                                                          {FeatureSite::Midpoint, "midpoint"},
+                                                          {FeatureSite::Tips, "tips"}}}};
 
 // A mutually farthest (or best found) pair and the distance fields from it.
 struct DiameterEnds {
@@ -227,6 +228,49 @@ Index geodesic_midpoint(GeodesicSolver& solver, Index a, Index b, double reach, 
     }
   }
   return best == kInvalidIndex ? fallback : best;
+}
+
+// FeatureSite::Tips: the tips around a pair are the extrema of f1 and f2
+// persisting at least this share of the diameter (a fingertip, a toe: below
+// eq. (6)'s min_persistence, above the ripples of a sampling) within this
+// share of epsilon x the diameter of the pair's midpoint.
+constexpr double kSiteTipPersistence = 0.01;
+constexpr double kSiteTipRadius = 0.5;
+
+// FeatureSite::Tips: the vertex within `radius` of `site` (a pair's
+// midpoint) with the least sum of squared distances to the tips (`tips`,
+// sorted) within `radius` of site, their geodesic centre; distances counted
+// in whole units of `coarse`, so that the sums are exact and a similar copy
+// makes the same choice; ties as the midpoint's (the larger f1 + f2 on the
+// grid, then the id). `site` itself where fewer than two tips lie around it.
+Index tips_centre(GeodesicSolver& solver, Index site, const std::vector<Index>& tips, double radius, double coarse,
+                  const std::vector<double>& f1, const std::vector<double>& f2) {
+  std::vector<std::pair<Index, double>> ball;  // (vertex, sum of squared distances)
+  std::vector<Index> around;
+  solver.run({site}, GeodesicOptions{radius});
+  for (const Index w : solver.settled()) {
+    ball.emplace_back(w, 0.0);
+    if (std::binary_search(tips.begin(), tips.end(), w)) around.push_back(w);
+  }
+  if (around.size() < 2) return site;
+  const GeodesicOptions reach{2.0 * radius};
+  for (const Index t : around) {
+    const DistanceField& from_t = solver.run({t}, reach);
+    for (auto& [w, sum] : ball) {
+      const double d = std::round(from_t.distance[static_cast<std::size_t>(w)] / coarse);  // inf beyond reach
+      sum += d * d;
+    }
+  }
+  Index best = site;
+  std::tuple<double, double, Index> best_key{std::numeric_limits<double>::infinity(), 0.0, site};
+  for (const auto& [w, sum] : ball) {
+    const auto key = std::make_tuple(sum, -(f1[static_cast<std::size_t>(w)] + f2[static_cast<std::size_t>(w)]), w);
+    if (key < best_key) {
+      best_key = key;
+      best = w;
+    }
+  }
+  return best;
 }
 
 // a[v], for the per-vertex fields below.
@@ -482,14 +526,23 @@ FeaturePoints extract_feature_points(const Mesh& mesh, const MeshGraph& graph, c
   const auto partner = [&](const std::vector<Index>& of, const std::vector<Index>& nearest, Index v) {
     return of[static_cast<std::size_t>(nearest[static_cast<std::size_t>(v)])];
   };
+  std::vector<Index> site_tips;  // FeatureSite::Tips
+  if (options.site == FeatureSite::Tips) {
+    const double threshold = std::round(kSiteTipPersistence / kTieGrid);
+    const std::vector<Index> tips1 = persistent_extrema(graph, f1, threshold),
+                             tips2 = persistent_extrema(graph, f2, threshold);
+    std::set_union(tips1.begin(), tips1.end(), tips2.begin(), tips2.end(), std::back_inserter(site_tips));
+  }
   for (const Index v : candidates) {
     if (at(to_features, v) <= radius) continue;
     Index site = v;
-    if (options.site == FeatureSite::Midpoint) {
+    if (options.site != FeatureSite::Extremum) {
       // v is one of the pair (its own nearest extremum); d(a, b) is at most
       // d(a, v) + d(v, b), plus the grid's rounding.
       const Index a = partner(out.extrema1, nearest_e1, v), b = partner(out.extrema2, nearest_e2, v);
       if (a != b) site = geodesic_midpoint(solver, a, b, (at(to_e1, v) + at(to_e2, v) + 2) * unit, unit, f1, f2, v);
+      if (options.site == FeatureSite::Tips && site != s1 && site != s2)
+        site = tips_centre(solver, site, site_tips, kSiteTipRadius * radius, 1000.0 * unit, f1, f2);
       if (at(to_features, site) <= radius) continue;
     }
     take_feature_point(site, near, solver, out, to_features);

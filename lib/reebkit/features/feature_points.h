@@ -22,6 +22,16 @@ enum class FeatureSite {
   /// fall apart and the greedy order takes one or the other as the sampling
   /// decides; their midpoint moves only as much as each of them does.
   Midpoint,
+  /// At the centre of the tips around the pair (the default since layout
+  /// 15): the vertex within epsilon / 2 of the midpoint nearest, by the sum
+  /// of squared geodesic distances, to the extrema of f1 and f2 there that
+  /// persist at least 0.01 x the diameter (the fingertips of a hand, the
+  /// toes of a paw). Which of several nearly tied tips is the farthest from
+  /// the ends changes with the pose and the sampling, and the extrema and
+  /// their midpoint jump with it from finger to finger; the set of tips,
+  /// and its centre, stay. The midpoint where fewer than two tips lie
+  /// around it; the diameter ends stay on themselves.
+  Tips,
 };
 
 /// How the feature points are chosen from the geodesic functions.
@@ -79,7 +89,7 @@ const char* diameter_start_name(DiameterStart start);
 /// Inverse of diameter_start_name; throws InvalidArgument naming the accepted values.
 DiameterStart parse_diameter_start(const std::string& name);
 
-/// "extremum" or "midpoint": the names of the option --feature-site.
+/// "extremum", "midpoint" or "tips": the names of the option --feature-site.
 const char* feature_site_name(FeatureSite site);
 /// Inverse of feature_site_name; throws InvalidArgument naming the accepted values.
 FeatureSite parse_feature_site(const std::string& name);
@@ -149,11 +159,13 @@ struct FeatureOptions {
   /// no point for the whole limb. In [0, 1].
   double protrusion_persistence = 0.0;
   /// Where a feature point of eq. (6) lies: eq. (6) asks only that an
-  /// extremum of f1 and one of f2 lie within epsilon of it, so both sites
-  /// satisfy it. Midpoint (the default since layout 10) keeps the points of
-  /// round tips in place under resampling (docs/results.md, "Feature points
-  /// halfway between their two extrema").
-  FeatureSite site = FeatureSite::Midpoint;
+  /// extremum of f1 and one of f2 lie within epsilon of it. Midpoint
+  /// (layouts 10-14) keeps the points of round tips in place under
+  /// resampling (docs/results.md, "Feature points halfway between their two
+  /// extrema"); Tips (the default since layout 15) also those of tips that
+  /// split into nearly tied fingers or toes under pose (docs/results.md,
+  /// "Feature points at the centre of their tips").
+  FeatureSite site = FeatureSite::Tips;
   /// Which rule chooses the feature points: eq. (6) (Intersection, the
   /// paper's), the tips seen from the centre (Center) or eq. (6) confirmed
   /// by them (Confirmed).

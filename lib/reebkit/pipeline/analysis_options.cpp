@@ -74,9 +74,11 @@ const std::vector<AnalysisOptionField>& analysis_option_fields() {
             "also make a feature point of every extremum of f1 or f2 persisting at least this fraction of the "
             "diameter that lies more than 2 epsilon from every feature point (0: off, eq. 6 alone)",
             [](auto& o) -> auto& { return o.features.protrusion_persistence; }, OptionRange{0, 1}),
-      field("feature_site", "where the feature point of a pair of extrema of eq. (6) lies: midpoint (halfway "
-            "between the extremum of f1 and that of f2, the default: steadier on round tips) or extremum (on the "
-            "extremum the greedy order takes, layout 9 and before)",
+      field("feature_site", "where the feature point of a pair of extrema of eq. (6) lies: tips (the centre of "
+            "the extrema of f1 and f2 persisting at least 0.01 x the diameter within epsilon / 2 of the pair's "
+            "midpoint, the fingertips of a hand, the default: steadier under pose), midpoint (halfway between the "
+            "extremum of f1 and that of f2, layouts 10-14) or extremum (on the extremum the greedy order takes, "
+            "layout 9 and before)",
             [](auto& o) -> auto& { return o.features.site; }),
       field("feature_rule", "how the feature points are chosen: intersection (eq. 6, the relaxed intersection of "
             "the extrema of f1 and f2, the default) or center (the diameter ends and the maxima of the distance "

@@ -45,7 +45,9 @@ namespace reebkit {
 /// 14: the same columns, with every spectrum (`dna_*`, `heat_*`,
 /// `spectrum_*`) computed on the intrinsic Delaunay triangulation of its
 /// coarse copy (mesh/intrinsic_delaunay.h).
-inline constexpr int kCollectionLayoutVersion = 14;
+/// 15: the same columns; the feature points other than the diameter ends
+/// at the centre of their tips (FeatureSite::Tips, features/feature_points.h).
+inline constexpr int kCollectionLayoutVersion = 15;
 
 /// Where the file came from: file attributes, and two groups.
 struct Provenance {
