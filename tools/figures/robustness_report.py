@@ -19,6 +19,24 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 METHODS = ["dijkstra", "fmm"]
+
+# Earlier defaults that robustness.sh measures again beside today's (the
+# folder under the work directory, the two columns' names, what changed).
+EARLIER_DEFAULTS = [
+    ("layout14", "midpoint (layout 14)", "tips (today)",
+     "the feature points other than the diameter ends at the centre of the tips around their pair "
+     "(`--feature-site tips`, layout 15), against halfway between the pair's two extrema (`--feature-site "
+     "midpoint`, layouts 10-14). On a limb that ends in nearly tied tips (fingers, toes) the extremum, and "
+     "the midpoint with it, moves to whichever tip a sampling or a pose makes the farthest; the centre of "
+     "the tips does not"),
+    ("layout10", "from vertex 0 (layout 10)", "from the centroid (today)",
+     "the diameter search started at the vertex farthest from the area centroid (`--diameter-start "
+     "centroid`, layout 11), against the search from vertex 0 (`--diameter-start vertex`, layout 10), both "
+     "under today's other defaults. Vertex 0 lies wherever a file puts it, and the search from it ends on one "
+     "or another of the nearly tied pairs of a symmetric shape; the vertex farthest from the centroid is the "
+     "same point of the surface however it is numbered"),
+]
+
 # Paper section 5.1: seconds on a 3 GHz Pentium 4 for 2k, 10k, 40k and 100k faces.
 PAPER_SECONDS = {2000: 0.23, 10000: 2.0, 40000: 17.0, 100000: 86.0}
 
@@ -224,23 +242,20 @@ def sampling_section(work, report, out):
                "graph. No selection rule can pin a diameter end that the surface itself does not single out; the "
                "retrieval of these shapes rests on the whole-surface terms of the matching (g_s, g_g: "
                "docs/method.md), which do not depend on the ends.\n")
-    layout10 = [r for r in sampling_rows(work / "layout10") if r["kind"] != "pose"]
-    if layout10:
-        out.append("*Old and new*: the diameter search started at the vertex farthest from the area centroid "
-                   "(`--diameter-start centroid`, layout 11), against the search from vertex 0 "
-                   "(`--diameter-start vertex`, layout 10), fast marching, the same variants, each numbered anew. "
-                   "Vertex 0 lies wherever a file puts it, and the search from it ends on one or another of the "
-                   "nearly tied pairs of a symmetric shape; the vertex farthest from the centroid is the same "
-                   "point of the surface however it is numbered.\n")
-        out.append("| perturbation | originals | layout 10: forward | same nodes | layout 11: forward | same nodes |")
+    for folder, old_name, new_name, why in EARLIER_DEFAULTS:
+        earlier = [r for r in sampling_rows(work / folder) if r["kind"] != "pose"]
+        if not earlier:
+            continue
+        out.append(f"*Old and new*: {why}, fast marching, the same variants, each numbered anew.\n")
+        out.append(f"| perturbation | originals | {old_name}: forward | same nodes | {new_name}: forward | same nodes |")
         out.append("|---|---|---:|---:|---:|---:|")
-        old = by_variant(layout10)
+        old = by_variant(earlier)
         for kind, strength in [("decimate", 0.5), ("remesh", 1.0)]:
             for name, pick in [("all", lambda rs: rs), ("3 or more", three_or_more)]:
                 a, b = summarize(pick(old[(kind, strength, "fmm")])), summarize(pick(table[(kind, strength, "fmm")]))
                 out.append(f"| {kind} {strength:g} | {name} | {pct(a['forward'])} | {pct(a['nodes'])} | "
                            f"{pct(b['forward'])} | {pct(b['nodes'])} |")
-        a = summarize([r for r in layout10 if r["method"] == "fmm"])
+        a = summarize([r for r in earlier if r["method"] == "fmm"])
         b = summarize([r for r in rows if r["method"] == "fmm"])
         out.append(f"| every perturbation | all | {pct(a['forward'])} | {pct(a['nodes'])} | {pct(b['forward'])} | "
                    f"{pct(b['nodes'])} |")
@@ -288,7 +303,9 @@ def pose_section(work, report, out):
                        f"{mean(across):.3f} |")
     out.append("")
     lines = []
-    earlier = [(" with layout 10's diameter search (from vertex 0)", work / "layout10" / "tosca_poses.csv"),
+    earlier = [(" with layout 14's feature points (halfway between their two extrema)",
+                work / "layout14" / "tosca_poses.csv"),
+               (" with layout 10's diameter search (from vertex 0)", work / "layout10" / "tosca_poses.csv"),
                (" with layout 8's feature points (epsilon 0.05, persistence 0.01, on the extrema)",
                 work / "layout8" / "tosca_poses.csv")]
     for name, table in [("", rows)] + [(n, read(p)) for n, p in earlier if p.exists()]:
