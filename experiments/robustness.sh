@@ -65,22 +65,24 @@ step "2: sampling, closed CGAL meshes" "$robustness" sampling "$work" cgal "${cg
 step "2: sampling, TOSCA (one pose per class)" "$robustness" sampling "$work" tosca "${tosca[@]}"
 step "3: TOSCA poses" "$robustness" tosca "$work" "$data/tosca_dev"
 # The defaults of earlier layouts, side by side with today's in the report.
-mkdir -p "$work/layout8" "$work/layout10" "$work/layout14"
+mkdir -p "$work/layout8"
 step "3: TOSCA poses, the feature points of layout 8 (epsilon 0.05, persistence 0.01, on the extrema)" \
   "$robustness" --option epsilon=0.05 --option min_persistence=0.01 --option feature_site=extremum \
   tosca "$work/layout8" "$data/tosca_dev"
-layout10=("$robustness" --option diameter_start=vertex)
-step "2, 3: the diameter search of layout 10 (from vertex 0): SHREC07" \
-  "${layout10[@]}" shrec-sample "$work/layout10" "$shrec" "$cla" "$per_class"
-step "2, 3: the diameter search of layout 10: CGAL" "${layout10[@]}" sampling "$work/layout10" cgal "${cgal[@]}"
-step "2, 3: the diameter search of layout 10: TOSCA" "${layout10[@]}" sampling "$work/layout10" tosca "${tosca[@]}"
-step "2, 3: the diameter search of layout 10: TOSCA poses" "${layout10[@]}" tosca "$work/layout10" "$data/tosca_dev"
-layout14=("$robustness" --option feature_site=midpoint)
-step "2, 3: the feature points of layout 14 (halfway between their two extrema): SHREC07" \
-  "${layout14[@]}" shrec-sample "$work/layout14" "$shrec" "$cla" "$per_class"
-step "2, 3: the feature points of layout 14: CGAL" "${layout14[@]}" sampling "$work/layout14" cgal "${cgal[@]}"
-step "2, 3: the feature points of layout 14: TOSCA" "${layout14[@]}" sampling "$work/layout14" tosca "${tosca[@]}"
-step "2, 3: the feature points of layout 14: TOSCA poses" "${layout14[@]}" tosca "$work/layout14" "$data/tosca_dev"
+# earlier NAME FOLDER OPTION...: the sampling and pose sections again into
+# $work/FOLDER under an earlier default.
+earlier() {
+  local name=$1 folder=$work/$2
+  shift 2
+  local run=("$robustness" "$@")
+  mkdir -p "$folder"
+  step "2, 3: $name: SHREC07" "${run[@]}" shrec-sample "$folder" "$shrec" "$cla" "$per_class"
+  step "2, 3: $name: CGAL" "${run[@]}" sampling "$folder" cgal "${cgal[@]}"
+  step "2, 3: $name: TOSCA" "${run[@]}" sampling "$folder" tosca "${tosca[@]}"
+  step "2, 3: $name: TOSCA poses" "${run[@]}" tosca "$folder" "$data/tosca_dev"
+}
+earlier "the diameter search of layout 10 (from vertex 0)" layout10 --option diameter_start=vertex
+earlier "the feature points of layout 14 (halfway between their two extrema)" layout14 --option feature_site=midpoint
 step "6: timing" env OMP_NUM_THREADS=1 "$robustness" timing "$work" "$data/tosca_dev/michael0.off" 2000 10000 40000 100000
 printf 'total\t%s\n' "$((SECONDS - start_all))" >> "$work/steps.tsv"
 step "report and plots" /usr/bin/python3 "$source_dir/tools/figures/robustness_report.py" "$work" "$report"
