@@ -175,9 +175,16 @@ SpectraSurface spectra_surface(const Mesh& mesh, const SpectraOptions& options) 
                            static_cast<double>(options.fine_vertices) / static_cast<double>(mesh.num_vertices()), 0.25);
     out.mesh = std::move(fine.mesh);
     for (const Index v : fine.original_vertex) out.original_vertex.push_back(canonical.original_vertex[at(v)]);
-  } else {
+  } else if (canonical.axis_gap >= options.min_axis_gap) {
     out.mesh = std::move(canonical.mesh);
     out.original_vertex = std::move(canonical.original_vertex);
+  } else {
+    // No frame of its own (a rotational symmetry): the copy's coordinates,
+    // snapped in a frame that turns with the rounding, and its order would
+    // differ between similar copies; the surface as given does not.
+    out.mesh = mesh;
+    out.original_vertex.resize(at(mesh.num_vertices()));
+    std::iota(out.original_vertex.begin(), out.original_vertex.end(), Index{0});
   }
   out.global = global_spectrum(out.mesh, out.axis_gap, options);
   return out;

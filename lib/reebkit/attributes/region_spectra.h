@@ -80,8 +80,9 @@ struct SpectraOptions {
 
 /// The surface the spectra are computed on: the canonical copy of a mesh
 /// (canonical_copy, mesh/transform.h), decimated to about
-/// SpectraOptions::fine_vertices vertices where it has more and its frame is
-/// well-defined. It depends on the mesh alone, not on its Reeb graph, so it
+/// SpectraOptions::fine_vertices vertices where it has more; the mesh as
+/// given where its frame is ill-defined (axis_gap below
+/// SpectraOptions::min_axis_gap). It depends on the mesh alone, not on its Reeb graph, so it
 /// can be prepared while the graph is built (analyze_mesh).
 struct SpectraSurface {
   Mesh mesh;

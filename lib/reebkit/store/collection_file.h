@@ -46,7 +46,9 @@ namespace reebkit {
 /// `spectrum_*`) computed on the intrinsic Delaunay triangulation of its
 /// coarse copy (mesh/intrinsic_delaunay.h).
 /// 15: the same columns; the feature points other than the diameter ends
-/// at the centre of their tips (FeatureSite::Tips, features/feature_points.h).
+/// at the centre of their tips (FeatureSite::Tips, features/feature_points.h),
+/// and the spectra of a surface without a frame of its own on the surface as
+/// given (attributes/region_spectra.h).
 inline constexpr int kCollectionLayoutVersion = 15;
 
 /// Where the file came from: file attributes, and two groups.
