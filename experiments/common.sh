@@ -2,11 +2,13 @@
 #   source "$(dirname "$0")/common.sh"
 #   experiment_arguments results/NAME "$@"
 
-# experiment_arguments DEFAULT_REPORT BUILD_DIR [REPORT_DIR]: sets build (the
-# build folder, absolute), source_dir (the checkout), report (REPORT_DIR, or
-# DEFAULT_REPORT under the checkout), threads (THREADS, default 2) and the
-# programs reeb and baselines of the build; prints the usage and exits on a
-# wrong argument count.
+# experiment_arguments DEFAULT_REPORT BUILD_DIR [REPORT_DIR]: moves to the
+# checkout and sets build (the build folder, relative to the checkout, so
+# that the reports name their files as any other checkout would), source_dir
+# (the checkout, absolute), report (REPORT_DIR, or DEFAULT_REPORT under the
+# checkout), threads (THREADS, default 2) and the programs reeb and
+# baselines of the build; prints the usage and exits on a wrong argument
+# count.
 experiment_arguments() {
   local default=$1
   shift
@@ -17,6 +19,9 @@ experiment_arguments() {
   build=$(cd "$1" && pwd)
   source_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
   report=${2:-$source_dir/$default}
+  report=$(realpath -m "$report")
+  cd "$source_dir"
+  build=$(realpath --relative-to=. "$build")
   threads=${THREADS:-2}
   reeb=$build/tools/reeb
   baselines=$build/experiments/baselines
