@@ -76,13 +76,17 @@ TEST(Transform, CanonicalCopyIsTheSameForEverySimilarCopy) {
   }
 }
 
-// The axes of a shape with a symmetry are ill-defined: a small axis_gap.
+// The axes of a shape with a symmetry are ill-defined: a small axis_gap,
+// the same from the frame alone as from the copy made in it.
 TEST(Transform, CanonicalCopyReportsIllDefinedAxes) {
-  EXPECT_LT(canonical_copy(make_icosphere(3)).axis_gap, 1e-9);   // icosahedral symmetry: a multiple of the identity
-  EXPECT_LT(canonical_copy(make_torus(48, 16)).axis_gap, 1e-9);  // rotation symmetry about its axis
+  EXPECT_LT(surface_frame(make_icosphere(3)).axis_gap, 1e-9);   // icosahedral symmetry: a multiple of the identity
+  EXPECT_LT(surface_frame(make_torus(48, 16)).axis_gap, 1e-9);  // rotation symmetry about its axis
   // An 8 x 3 rectangle: second moments 64 / 12, 9 / 12 and 0, gaps 55 / 64 and 9 / 64.
-  EXPECT_NEAR(canonical_copy(make_grid(8, 3)).axis_gap, 9.0 / 64.0, 1e-12);
+  const Mesh grid = make_grid(8, 3);
+  EXPECT_NEAR(surface_frame(grid).axis_gap, 9.0 / 64.0, 1e-12);
+  EXPECT_EQ(canonical_copy(grid).axis_gap, surface_frame(grid).axis_gap);
   const Mesh empty;
+  EXPECT_EQ(surface_frame(empty).area, 0.0);
   EXPECT_EQ(canonical_copy(empty).axis_gap, 0.0);
 }
 

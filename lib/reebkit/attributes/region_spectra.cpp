@@ -160,31 +160,32 @@ std::vector<double> global_spectrum(const Mesh& surface, double axis_gap, const 
 
 SpectraSurface spectra_surface(const Mesh& mesh, const SpectraOptions& options) {
   check_options(options);
-  // Everything below on the surface's canonical copy (mesh/transform.h):
-  // the decimation follows the frame, the rounding and the order of its
-  // input, the spectrum none of them, so similar copies of a surface get
-  // the same coarse copies and the same values.
-  CanonicalCopy canonical = canonical_copy(mesh);
+  // Everything below on the surface's canonical copy (mesh/transform.h)
+  // where it has a frame of its own: the decimation follows the frame, the
+  // rounding and the order of its input, the spectrum none of them, so
+  // similar copies of a surface get the same coarse copies and the same
+  // values.
+  const SurfaceFrame frame = surface_frame(mesh);
   SpectraSurface out;
   out.input_vertices = mesh.num_vertices();
-  out.axis_gap = canonical.axis_gap;
-  if (canonical.axis_gap >= options.min_axis_gap && mesh.num_vertices() > options.fine_vertices) {
-    // The size of this copy matters little (a loose tolerance: one try).
-    MeshVariant fine =
-        decimated_or_whole(canonical.mesh,
-                           static_cast<double>(options.fine_vertices) / static_cast<double>(mesh.num_vertices()), 0.25);
-    out.mesh = std::move(fine.mesh);
-    for (const Index v : fine.original_vertex) out.original_vertex.push_back(canonical.original_vertex[at(v)]);
-  } else if (canonical.axis_gap >= options.min_axis_gap) {
-    out.mesh = std::move(canonical.mesh);
-    out.original_vertex = std::move(canonical.original_vertex);
-  } else {
+  out.axis_gap = frame.axis_gap;
+  if (frame.axis_gap < options.min_axis_gap) {
     // No frame of its own (a rotational symmetry): the copy's coordinates,
     // snapped in a frame that turns with the rounding, and its order would
     // differ between similar copies; the surface as given does not.
     out.mesh = mesh;
     out.original_vertex.resize(at(mesh.num_vertices()));
     std::iota(out.original_vertex.begin(), out.original_vertex.end(), Index{0});
+  } else if (CanonicalCopy canonical = canonical_copy(mesh, frame); mesh.num_vertices() > options.fine_vertices) {
+    // The size of this copy matters little (a loose tolerance: one try).
+    MeshVariant fine =
+        decimated_or_whole(canonical.mesh,
+                           static_cast<double>(options.fine_vertices) / static_cast<double>(mesh.num_vertices()), 0.25);
+    out.mesh = std::move(fine.mesh);
+    for (const Index v : fine.original_vertex) out.original_vertex.push_back(canonical.original_vertex[at(v)]);
+  } else {
+    out.mesh = std::move(canonical.mesh);
+    out.original_vertex = std::move(canonical.original_vertex);
   }
   out.global = global_spectrum(out.mesh, out.axis_gap, options);
   return out;

@@ -54,7 +54,7 @@ struct SpectraOptions {
   /// >= coarse_vertices.
   Index global_vertices = 6000;
   /// The surface is used as it is, not decimated, when the gap between the
-  /// second moments about its principal axes (CanonicalCopy::axis_gap,
+  /// second moments about its principal axes (SurfaceFrame::axis_gap,
   /// mesh/transform.h) is below this: its frame, hence its coarse copy,
   /// would turn with the rounding of its input. In [0, 1]; 0 always
   /// decimates.
@@ -90,7 +90,7 @@ struct SpectraSurface {
   std::vector<Index> original_vertex;
   /// #V of the input.
   Index input_vertices = 0;
-  /// CanonicalCopy::axis_gap of the input.
+  /// SurfaceFrame::axis_gap of the input.
   double axis_gap = 0.0;
   /// SurfaceSpectra::global: the whole surface's values need no regions,
   /// so they are computed with the surface, while the graph is built.

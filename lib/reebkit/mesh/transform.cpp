@@ -77,11 +77,12 @@ std::vector<Index> random_permutation(Index n, std::uint64_t seed) {
   return order;
 }
 
-CanonicalCopy canonical_copy(const Mesh& mesh) {
+SurfaceFrame surface_frame(const Mesh& mesh) {
   // Moments of the surface: each triangle's integrals of 1, x and x x^T
   // (exact for the linear triangle: area / 12 (sum v_i v_i^T + s s^T), s the
   // sum of its corners), about the first vertex to keep them small.
-  const Vec3 origin = mesh.num_vertices() > 0 ? Vec3(mesh.vertices.row(0)) : Vec3::Zero();
+  SurfaceFrame out;
+  out.origin = mesh.num_vertices() > 0 ? Vec3(mesh.vertices.row(0)) : Vec3::Zero();
   double area = 0.0;
   Vec3 first = Vec3::Zero();
   Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
@@ -90,7 +91,7 @@ CanonicalCopy canonical_copy(const Mesh& mesh) {
     Vec3 sum = Vec3::Zero();
     Eigen::Matrix3d outer = Eigen::Matrix3d::Zero();
     for (int c = 0; c < 3; ++c) {
-      const Vec3 p = mesh.vertices.row(mesh.triangles(t, c)).transpose() - origin;
+      const Vec3 p = mesh.vertices.row(mesh.triangles(t, c)).transpose() - out.origin;
       sum += p;
       outer += p * p.transpose();
     }
@@ -98,29 +99,42 @@ CanonicalCopy canonical_copy(const Mesh& mesh) {
     first += a / 3.0 * sum;
     second += a / 12.0 * (outer + sum * sum.transpose());
   }
-  CanonicalCopy out;
-  if (!(area > 0.0)) {
-    out.mesh = mesh;
-    out.original_vertex.resize(static_cast<std::size_t>(mesh.num_vertices()));
-    std::iota(out.original_vertex.begin(), out.original_vertex.end(), Index{0});
-    return out;
-  }
-  const Vec3 centroid = first / area;
-  const Eigen::Matrix3d covariance = second / area - centroid * centroid.transpose();
+  if (!(area > 0.0)) return out;
+  out.area = area;
+  out.centroid = first / area;
+  const Eigen::Matrix3d covariance = second / area - out.centroid * out.centroid.transpose();
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> axes(covariance);  // ascending
   const Vec3 moment = axes.eigenvalues();
   out.axis_gap = moment(2) > 0.0 ? std::min(moment(2) - moment(1), moment(1) - moment(0)) / moment(2) : 0.0;
-  Eigen::Matrix3d frame;
-  for (int d = 0; d < 3; ++d) frame.row(d) = axes.eigenvectors().col(2 - d).transpose() / std::sqrt(area);
-  const auto place = [&](Index v) -> Vec3 { return frame * (mesh.vertices.row(v).transpose() - origin - centroid); };
+  for (int d = 0; d < 3; ++d) out.axes.row(d) = axes.eigenvectors().col(2 - d).transpose() / std::sqrt(area);
   // Third moments about each axis, from the triangle centroids.
+  const auto place = [&](Index v) -> Vec3 {
+    return out.axes * (mesh.vertices.row(v).transpose() - out.origin - out.centroid);
+  };
   Vec3 third = Vec3::Zero();
   for (Index t = 0; t < mesh.num_triangles(); ++t) {
     const Vec3 c = (place(mesh.triangles(t, 0)) + place(mesh.triangles(t, 1)) + place(mesh.triangles(t, 2))) / 3.0;
     third += triangle_area(mesh, t) * c.cwiseProduct(c).cwiseProduct(c);
   }
   for (int d = 0; d < 3; ++d)
-    if (third(d) < 0.0) frame.row(d) *= -1.0;
+    if (third(d) < 0.0) out.axes.row(d) *= -1.0;
+  return out;
+}
+
+CanonicalCopy canonical_copy(const Mesh& mesh) { return canonical_copy(mesh, surface_frame(mesh)); }
+
+CanonicalCopy canonical_copy(const Mesh& mesh, const SurfaceFrame& frame) {
+  CanonicalCopy out;
+  if (!(frame.area > 0.0)) {
+    out.mesh = mesh;
+    out.original_vertex.resize(static_cast<std::size_t>(mesh.num_vertices()));
+    std::iota(out.original_vertex.begin(), out.original_vertex.end(), Index{0});
+    return out;
+  }
+  out.axis_gap = frame.axis_gap;
+  const auto place = [&](Index v) -> Vec3 {
+    return frame.axes * (mesh.vertices.row(v).transpose() - frame.origin - frame.centroid);
+  };
 
   const Index n = mesh.num_vertices();
   std::vector<std::array<double, 3>> position(static_cast<std::size_t>(n));

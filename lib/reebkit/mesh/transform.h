@@ -41,16 +41,32 @@ Mesh renumbered(const Mesh& mesh, const std::vector<Index>& to);
 /// A permutation of 0 .. n - 1, repeatable for a given seed.
 std::vector<Index> random_permutation(Index n, std::uint64_t seed);
 
-/// A mesh in a frame of its own (canonical_copy).
-struct CanonicalCopy {
-  Mesh mesh;
-  /// #V of `mesh`: the vertex of the input that vertex v is.
-  std::vector<Index> original_vertex;
+/// The frame of its own that canonical_copy puts a surface in.
+struct SurfaceFrame {
+  /// The vertex the moments were summed about (vertex 0), and the area
+  /// centroid relative to it: a point x goes to axes (x - origin - centroid).
+  Vec3 origin = Vec3::Zero(), centroid = Vec3::Zero();
+  /// Rows: the principal axes, largest second moment first, each pointing to
+  /// the side of positive third moment, over the square root of the area.
+  Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();
   /// The smaller gap between consecutive second moments of the surface
   /// about its principal axes, relative to the largest, in [0, 1]: where it
   /// is small the axes are ill-defined (a shape with a symmetry axis, a
   /// sphere), and they turn with the rounding of the input.
   double axis_gap = 0.0;
+  double area = 0.0;  ///< 0: no frame (a mesh without area)
+};
+
+/// The frame of `mesh` (canonical_copy): its moments alone, without the
+/// copy's sorts.
+SurfaceFrame surface_frame(const Mesh& mesh);
+
+/// A mesh in a frame of its own (canonical_copy).
+struct CanonicalCopy {
+  Mesh mesh;
+  /// #V of `mesh`: the vertex of the input that vertex v is.
+  std::vector<Index> original_vertex;
+  double axis_gap = 0.0;  ///< SurfaceFrame::axis_gap
 };
 
 /// `mesh` in a frame of its own, so that its similar copies (any rotation,
@@ -70,5 +86,8 @@ struct CanonicalCopy {
 /// moment vanishes (a mirror symmetry) by a reflection. A mesh without area
 /// is returned as it is, with axis_gap 0.
 CanonicalCopy canonical_copy(const Mesh& mesh);
+
+/// The same in `frame`, surface_frame(mesh).
+CanonicalCopy canonical_copy(const Mesh& mesh, const SurfaceFrame& frame);
 
 }  // namespace reebkit
