@@ -26,15 +26,16 @@ EARLIER_DEFAULTS = [
     ("layout14", "midpoint (layout 14)", "tips (today)",
      "the feature points other than the diameter ends at the centre of the tips around their pair "
      "(`--feature-site tips`, layout 15), against halfway between the pair's two extrema (`--feature-site "
-     "midpoint`, layouts 10-14). On a limb that ends in nearly tied tips (fingers, toes) the extremum, and "
-     "the midpoint with it, moves to whichever tip a sampling or a pose makes the farthest; the centre of "
-     "the tips does not"),
+     "midpoint`, layouts 10-14)",
+     "On a limb that ends in nearly tied tips (fingers, toes) the extremum, and the midpoint with it, moves to "
+     "whichever tip a sampling or a pose makes the farthest; the centre of the tips does not"),
     ("layout10", "from vertex 0 (layout 10)", "from the centroid (today)",
      "the diameter search started at the vertex farthest from the area centroid (`--diameter-start "
      "centroid`, layout 11), against the search from vertex 0 (`--diameter-start vertex`, layout 10), both "
-     "under today's other defaults. Vertex 0 lies wherever a file puts it, and the search from it ends on one "
-     "or another of the nearly tied pairs of a symmetric shape; the vertex farthest from the centroid is the "
-     "same point of the surface however it is numbered"),
+     "under today's other defaults",
+     "Vertex 0 lies wherever a file puts it, and the search from it ends on one or another of the nearly tied "
+     "pairs of a symmetric shape; the vertex farthest from the centroid is the same point of the surface "
+     "however it is numbered"),
 ]
 
 # Paper section 5.1: seconds on a 3 GHz Pentium 4 for 2k, 10k, 40k and 100k faces.
@@ -242,11 +243,12 @@ def sampling_section(work, report, out):
                "graph. No selection rule can pin a diameter end that the surface itself does not single out; the "
                "retrieval of these shapes rests on the whole-surface terms of the matching (g_s, g_g: "
                "docs/method.md), which do not depend on the ends.\n")
-    for folder, old_name, new_name, why in EARLIER_DEFAULTS:
+    for folder, old_name, new_name, what, why in EARLIER_DEFAULTS:
         earlier = [r for r in sampling_rows(work / folder) if r["kind"] != "pose"]
         if not earlier:
             continue
-        out.append(f"*Old and new*: {why}, fast marching, the same variants, each numbered anew.\n")
+        out.append(f"*Old and new*: {what}; both with fast marching on the same variants, each numbered anew. "
+                   f"{why}.\n")
         out.append(f"| perturbation | originals | {old_name}: forward | same nodes | {new_name}: forward | same nodes |")
         out.append("|---|---|---:|---:|---:|---:|")
         old = by_variant(earlier)
