@@ -5,6 +5,7 @@
 #include "reebkit/mesh/heat_kernel.h"
 #include "reebkit/mesh/mesh_topology.h"
 #include "reebkit/mesh/shape_dna.h"
+#include "reebkit/mesh/surface_correspondence.h"
 #include "reebkit/mesh/transform.h"
 
 #include <algorithm>
@@ -103,11 +104,7 @@ MeshVariant decimated_or_whole(const Mesh& m, double ratio, double tolerance) {
       if (connected_components(coarse.mesh.triangles, coarse.mesh.num_vertices()).count == 1) return coarse;
     } catch (const InvalidMeshError&) {
     }
-  MeshVariant whole;
-  whole.mesh = m;
-  whole.original_vertex.resize(at(m.num_vertices()));
-  std::iota(whole.original_vertex.begin(), whole.original_vertex.end(), Index{0});
-  return whole;
+  return same_vertices(m);
 }
 
 /// The share of `surface`'s vertices its coarse copies keep to have about
