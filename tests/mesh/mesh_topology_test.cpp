@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -296,6 +297,24 @@ TEST(CornersByVertex, IsolatedVertexHasNoCorner) {
   const VertexCorners corners = corners_by_vertex(mesh.triangles, mesh.num_vertices());
   EXPECT_EQ(corners.start, (std::vector<Index>{0, 2, 4, 4, 5, 6}));
   EXPECT_EQ(corners.corner, (std::vector<Index>{1, 4, 2, 3, 5, 0}));
+  EXPECT_TRUE(corners.link.empty());  // only when asked for
+}
+
+// The links are the corner's triangle read on from the corner: (next, previous).
+TEST(CornersByVertex, LinksAreTheOtherTwoVerticesInTheTrianglesOrder) {
+  const Mesh mesh = make_mesh(5, {{4, 0, 1}, {1, 0, 3}});
+  const VertexCorners corners = corners_by_vertex(mesh.triangles, mesh.num_vertices(), true);
+  EXPECT_EQ(corners.corner, (std::vector<Index>{1, 4, 2, 3, 5, 0}));
+  const std::vector<std::array<Index, 2>> expected = {{1, 4}, {3, 1}, {4, 0}, {0, 3}, {1, 0}, {0, 1}};
+  EXPECT_EQ(corners.link, expected);
+  const Mesh big = torus(12, 8);
+  const VertexCorners all = corners_by_vertex(big.triangles, big.num_vertices(), true);
+  ASSERT_EQ(all.link.size(), all.corner.size());
+  for (std::size_t i = 0; i < all.corner.size(); ++i) {
+    const Index t = all.corner[i] / 3, k = all.corner[i] % 3;
+    EXPECT_EQ(all.link[i][0], big.triangles(t, (k + 1) % 3)) << i;
+    EXPECT_EQ(all.link[i][1], big.triangles(t, (k + 2) % 3)) << i;
+  }
 }
 
 }  // namespace

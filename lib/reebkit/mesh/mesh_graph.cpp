@@ -13,11 +13,13 @@ namespace {
 // triangle (v, b, c) contributes the link edge b-c. Walking it yields the ring.
 class LinkWalker {
  public:
-  // Appends the ring of one vertex to the graph, from its link edges: one
-  // (b, c) per incident triangle read as (v, b, c) in the mesh's orientation.
-  void walk(const std::vector<std::array<Index, 2>>& link_edges, MeshGraph& g) {
+  // Appends the ring of one vertex to the graph, from its link edges
+  // [first, last): one (b, c) per incident triangle read as (v, b, c) in the
+  // mesh's orientation.
+  void walk(const std::array<Index, 2>* first, const std::array<Index, 2>* last, MeshGraph& g) {
     nodes_.clear();
-    for (const auto& [b, c] : link_edges) {
+    for (const std::array<Index, 2>* edge = first; edge != last; ++edge) {
+      const auto [b, c] = *edge;
       const std::size_t ib = node(b), ic = node(c);
       add_partner(ib, ic, true);
       add_partner(ic, ib, false);
@@ -111,8 +113,8 @@ class LinkWalker {
 MeshGraph build_mesh_graph(const Mesh& mesh) {
   const Index nv = mesh.num_vertices();
   const Index nf = mesh.num_triangles();
-  // The incident triangles of each vertex, as its corners (corner c = 3 f + k).
-  const VertexCorners corners = corners_by_vertex(mesh.triangles, nv);
+  // The incident triangles of each vertex, as its corners with their links.
+  const VertexCorners corners = corners_by_vertex(mesh.triangles, nv, true);
 
   MeshGraph g;
   g.offset.reserve(static_cast<std::size_t>(nv) + 1);
@@ -121,16 +123,9 @@ MeshGraph build_mesh_graph(const Mesh& mesh) {
   g.neighbor.reserve(static_cast<std::size_t>(nf) * 3 + 64);
   g.link_next.reserve(g.neighbor.capacity());
   LinkWalker walker;
-  std::vector<std::array<Index, 2>> link_edges;
   for (Index v = 0; v < nv; ++v) {
-    link_edges.clear();
-    for (Index i = corners.start[static_cast<std::size_t>(v)]; i < corners.start[static_cast<std::size_t>(v) + 1];
-         ++i) {
-      const Index f = corners.corner[static_cast<std::size_t>(i)] / 3;
-      const Index k = corners.corner[static_cast<std::size_t>(i)] % 3;
-      link_edges.push_back({mesh.triangles(f, (k + 1) % 3), mesh.triangles(f, (k + 2) % 3)});
-    }
-    walker.walk(link_edges, g);
+    walker.walk(corners.link.data() + corners.start[static_cast<std::size_t>(v)],
+                corners.link.data() + corners.start[static_cast<std::size_t>(v) + 1], g);
     g.offset.push_back(static_cast<Index>(g.neighbor.size()));
   }
   g.length.resize(g.neighbor.size());

@@ -63,7 +63,6 @@ void check_triangles(const Triangles& triangles, Index num_vertices, bool distin
 // corner c = 3 t + k is vertex triangles(t, k) as seen from triangle t.
 // Triangles are row-major, so corner c is entry c of the index array.
 Index corner_vertex(const Triangles& triangles, Index c) { return triangles.data()[c]; }
-Index next_corner(Index c) { return c % 3 == 2 ? c - 2 : c + 1; }
 Index previous_corner(Index c) { return c % 3 == 0 ? c + 2 : c - 1; }
 
 /// Union-find over triangles that keeps, for each triangle, whether it must be
@@ -109,9 +108,9 @@ class OrientationSets {
   std::vector<std::uint8_t> flipped_;
 };
 
-/// The edges at one vertex v, found from its corners: each incident triangle
-/// gives two half-edges, one leaving v and one entering it, grouped by their
-/// other endpoint. A neighbour's entry (#V of them) holds the vertex whose star
+/// The edges at one vertex v, found from its corners and their links: each
+/// incident triangle gives two half-edges, one leaving v and one entering it,
+/// grouped by their other endpoint. A neighbour's entry (#V of them) holds the vertex whose star
 /// last saw it and its edge there, so nothing is cleared between vertices and
 /// finding an edge takes one look-up.
 class VertexStar {
@@ -121,19 +120,22 @@ class VertexStar {
     Index count = 0;           ///< triangles on the edge
     Index halfedge[2] = {};    ///< the first two half-edges
     Index fan_corner[2] = {};  ///< their triangles' corners at v, as positions among v's corners
+    bool leaves[2] = {};       ///< whether each of the two half-edges leaves v (else it enters v)
   };
 
   explicit VertexStar(Index num_vertices) : seen_(static_cast<std::size_t>(num_vertices), Seen{kInvalidIndex, 0}) {}
 
-  /// Collects the edges of v from its corners (corner positions 0, 1, ...).
-  void collect(const Triangles& triangles, Index v, const Index* first_corner, Index degree) {
+  /// Collects the edges of vertex v of `corners` (corner positions 0, 1, ...).
+  void collect(const VertexCorners& corners, Index v) {
+    const Index degree = corners.degree(v);
+    const Index* first_corner = corners.corner.data() + corners.start[v];
+    const std::array<Index, 2>* link = corners.link.data() + corners.start[v];
     if (edges_.size() < 2 * static_cast<std::size_t>(degree)) edges_.resize(2 * static_cast<std::size_t>(degree));
     size_ = 0;
     for (Index i = 0; i < degree; ++i) {
       const Index c = first_corner[i];
-      add(v, corner_vertex(triangles, next_corner(c)), c, i);
-      const Index entering = previous_corner(c);
-      add(v, corner_vertex(triangles, entering), entering, i);
+      add(v, link[i][0], c, i, true);
+      add(v, link[i][1], previous_corner(c), i, false);
     }
   }
 
@@ -146,17 +148,18 @@ class VertexStar {
     Index edge;  ///< its edge there
   };
 
-  void add(Index v, Index other, Index halfedge, Index fan_corner) {
+  void add(Index v, Index other, Index halfedge, Index fan_corner, bool leaves) {
     Seen& seen = seen_[static_cast<std::size_t>(other)];
     if (seen.star != v) {
       seen = Seen{v, size_};
-      edges_[static_cast<std::size_t>(size_++)] = Edge{other, 1, {halfedge, 0}, {fan_corner, 0}};
+      edges_[static_cast<std::size_t>(size_++)] = Edge{other, 1, {halfedge, 0}, {fan_corner, 0}, {leaves, false}};
       return;
     }
     Edge& edge = edges_[static_cast<std::size_t>(seen.edge)];
     if (edge.count == 1) {
       edge.halfedge[1] = halfedge;
       edge.fan_corner[1] = fan_corner;
+      edge.leaves[1] = leaves;
     }
     ++edge.count;
   }
@@ -168,23 +171,21 @@ class VertexStar {
 
 /// The two triangles of a manifold edge run along it the same way (the same
 /// start vertex): one of them must flip for the two to agree.
-bool same_direction(const Triangles& triangles, const VertexStar::Edge& edge) {
-  return corner_vertex(triangles, edge.halfedge[0]) == corner_vertex(triangles, edge.halfedge[1]);
-}
+bool same_direction(const VertexStar::Edge& edge) { return edge.leaves[0] == edge.leaves[1]; }
 
 /// Whether flipping some triangles orients every manifold edge once each way:
 /// a two-colouring of the triangles under the edges' constraints, by a second
 /// pass over the stars. Needed only where the triangles as given disagree on
 /// an edge, so a consistently oriented file (the usual case) never pays for it.
-bool orientable_by_flips(const Triangles& triangles, const VertexCorners& corners) {
-  OrientationSets orientation(static_cast<Index>(triangles.rows()));
+bool orientable_by_flips(const VertexCorners& corners) {
+  OrientationSets orientation(static_cast<Index>(corners.corner.size() / 3));
   const auto num_vertices = static_cast<Index>(corners.start.size()) - 1;
   VertexStar star(num_vertices);
   for (Index v = 0; v < num_vertices; ++v) {
-    star.collect(triangles, v, corners.corner.data() + corners.start[v], corners.degree(v));
+    star.collect(corners, v);
     for (const VertexStar::Edge& edge : star)
       if (edge.other > v && edge.count == 2 &&
-          !orientation.relate(edge.halfedge[0] / 3, edge.halfedge[1] / 3, same_direction(triangles, edge)))
+          !orientation.relate(edge.halfedge[0] / 3, edge.halfedge[1] / 3, same_direction(edge)))
         return false;
   }
   return true;
@@ -226,16 +227,25 @@ ComponentLabels connected_components(const Triangles& triangles, Index num_verti
   return labels;
 }
 
-VertexCorners corners_by_vertex(const Triangles& triangles, Index num_vertices) {
+VertexCorners corners_by_vertex(const Triangles& triangles, Index num_vertices, bool links) {
   const Index num_corners = 3 * static_cast<Index>(triangles.rows());
   VertexCorners corners;
   corners.start.assign(static_cast<std::size_t>(num_vertices) + 1, 0);
   for (Index c = 0; c < num_corners; ++c) ++corners.start[static_cast<std::size_t>(corner_vertex(triangles, c)) + 1];
   std::partial_sum(corners.start.begin(), corners.start.end(), corners.start.begin());
   corners.corner.resize(static_cast<std::size_t>(num_corners));
+  if (links) corners.link.resize(static_cast<std::size_t>(num_corners));
   std::vector<Index> fill(corners.start.begin(), corners.start.end() - 1);
-  for (Index c = 0; c < num_corners; ++c)
-    corners.corner[static_cast<std::size_t>(fill[corner_vertex(triangles, c)]++)] = c;
+  const Index* index = triangles.data();
+  for (Index c = 0; c < num_corners; c += 3) {
+    const Index a = index[c], b = index[c + 1], d = index[c + 2];
+    const Index at[3] = {fill[a]++, fill[b]++, fill[d]++};
+    for (int k = 0; k < 3; ++k) corners.corner[static_cast<std::size_t>(at[k])] = c + k;
+    if (!links) continue;
+    corners.link[static_cast<std::size_t>(at[0])] = {b, d};
+    corners.link[static_cast<std::size_t>(at[1])] = {d, a};
+    corners.link[static_cast<std::size_t>(at[2])] = {a, b};
+  }
   return corners;
 }
 
@@ -254,7 +264,7 @@ MeshTopology analyze_topology(const Mesh& mesh) {
   // join their corners there into one fan; two boundary edges at a vertex
   // continue each other when they bound the same fan there (as if the vertex
   // were split into its fans); the endpoints of every edge join one component.
-  const VertexCorners corners = corners_by_vertex(triangles, num_vertices);
+  const VertexCorners corners = corners_by_vertex(triangles, num_vertices, true);
   VertexStar star(num_vertices);
   DisjointSets fans;  // over the corners of one vertex, by their position among them
   DisjointSets components(num_vertices);
@@ -264,7 +274,7 @@ MeshTopology analyze_topology(const Mesh& mesh) {
   std::vector<Index> fan_boundary_halfedge;  // per corner position of the vertex: first boundary half-edge of its fan
   for (Index v = 0; v < num_vertices; ++v) {
     const Index degree = corners.degree(v);
-    star.collect(triangles, v, corners.corner.data() + corners.start[v], degree);
+    star.collect(corners, v);
     fans.reset(degree);
     Index fan_count = degree;
     bool boundary = false;
@@ -278,7 +288,7 @@ MeshTopology analyze_topology(const Mesh& mesh) {
       ++topology.edges;
       if (edge.count == 1) boundary_halfedges.push_back(edge.halfedge[0]);
       if (edge.count > 2) ++topology.non_manifold_edges;
-      if (edge.count == 2 && same_direction(triangles, edge)) oriented_as_given = false;
+      if (edge.count == 2 && same_direction(edge)) oriented_as_given = false;
     }
     if (fan_count != 1) ++topology.non_manifold_vertices;
     if (!boundary) continue;
@@ -293,7 +303,7 @@ MeshTopology analyze_topology(const Mesh& mesh) {
       }
     }
   }
-  topology.orientable = oriented_as_given || orientable_by_flips(triangles, corners);
+  topology.orientable = oriented_as_given || orientable_by_flips(corners);
   topology.boundary_edges = static_cast<Index>(boundary_halfedges.size());
   topology.boundary_loops = count_boundary_loops(std::move(boundary_halfedges), continuations);
 

@@ -5,6 +5,7 @@
 #include "reebkit/core/mesh.h"
 #include "reebkit/core/types.h"
 
+#include <array>
 #include <vector>
 
 namespace reebkit {
@@ -51,13 +52,19 @@ MeshTopology analyze_topology(const Mesh& mesh);
 struct VertexCorners {
   std::vector<Index> start;   ///< #V + 1
   std::vector<Index> corner;  ///< 3 #F
+  /// Beside each corner of `corner` (when asked for): the two other vertices
+  /// of its triangle, the next and the previous in the triangle's order, so
+  /// that a pass over a vertex's corners reads them in sequence instead of
+  /// looking each triangle up (the triangles of a star lie far apart in a
+  /// large mesh).
+  std::vector<std::array<Index, 2>> link;
 
   Index degree(Index v) const { return start[v + 1] - start[v]; }  ///< incident triangles
 };
 
-/// Corners of `triangles` grouped by vertex, by a counting sort: O(#V + #F).
-/// Indices must lie in [0, num_vertices).
-VertexCorners corners_by_vertex(const Triangles& triangles, Index num_vertices);
+/// Corners of `triangles` grouped by vertex, by a counting sort: O(#V + #F);
+/// with `links`, VertexCorners::link too. Indices must lie in [0, num_vertices).
+VertexCorners corners_by_vertex(const Triangles& triangles, Index num_vertices, bool links = false);
 
 /// Vertex-connected components of `triangles` over `num_vertices` vertices.
 struct ComponentLabels {
