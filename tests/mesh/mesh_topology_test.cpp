@@ -303,18 +303,23 @@ TEST(CornersByVertex, IsolatedVertexHasNoCorner) {
 // The links are the corner's triangle read on from the corner: (next, previous).
 TEST(CornersByVertex, LinksAreTheOtherTwoVerticesInTheTrianglesOrder) {
   const Mesh mesh = make_mesh(5, {{4, 0, 1}, {1, 0, 3}});
-  const VertexCorners corners = corners_by_vertex(mesh.triangles, mesh.num_vertices(), true);
+  const VertexCorners corners = corners_by_vertex(mesh.triangles, mesh.num_vertices(), CornerParts::Both);
   EXPECT_EQ(corners.corner, (std::vector<Index>{1, 4, 2, 3, 5, 0}));
   const std::vector<std::array<Index, 2>> expected = {{1, 4}, {3, 1}, {4, 0}, {0, 3}, {1, 0}, {0, 1}};
   EXPECT_EQ(corners.link, expected);
   const Mesh big = torus(12, 8);
-  const VertexCorners all = corners_by_vertex(big.triangles, big.num_vertices(), true);
+  const VertexCorners all = corners_by_vertex(big.triangles, big.num_vertices(), CornerParts::Both);
   ASSERT_EQ(all.link.size(), all.corner.size());
   for (std::size_t i = 0; i < all.corner.size(); ++i) {
     const Index t = all.corner[i] / 3, k = all.corner[i] % 3;
     EXPECT_EQ(all.link[i][0], big.triangles(t, (k + 1) % 3)) << i;
     EXPECT_EQ(all.link[i][1], big.triangles(t, (k + 2) % 3)) << i;
   }
+  // Links alone: the same links, no corners.
+  const VertexCorners links = corners_by_vertex(big.triangles, big.num_vertices(), CornerParts::Links);
+  EXPECT_TRUE(links.corner.empty());
+  EXPECT_EQ(links.start, all.start);
+  EXPECT_EQ(links.link, all.link);
 }
 
 }  // namespace

@@ -113,8 +113,8 @@ class LinkWalker {
 MeshGraph build_mesh_graph(const Mesh& mesh) {
   const Index nv = mesh.num_vertices();
   const Index nf = mesh.num_triangles();
-  // The incident triangles of each vertex, as its corners with their links.
-  const VertexCorners corners = corners_by_vertex(mesh.triangles, nv, true);
+  // The incident triangles of each vertex, as the links of its corners.
+  const VertexCorners corners = corners_by_vertex(mesh.triangles, nv, CornerParts::Links);
 
   MeshGraph g;
   g.offset.reserve(static_cast<std::size_t>(nv) + 1);

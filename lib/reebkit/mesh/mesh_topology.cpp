@@ -125,7 +125,8 @@ class VertexStar {
 
   explicit VertexStar(Index num_vertices) : seen_(static_cast<std::size_t>(num_vertices), Seen{kInvalidIndex, 0}) {}
 
-  /// Collects the edges of vertex v of `corners` (corner positions 0, 1, ...).
+  /// Collects the edges of vertex v of `corners` (corner positions 0, 1, ...),
+  /// which must hold both the corners and their links (CornerParts::Both).
   void collect(const VertexCorners& corners, Index v) {
     const Index degree = corners.degree(v);
     const Index* first_corner = corners.corner.data() + corners.start[v];
@@ -227,20 +228,22 @@ ComponentLabels connected_components(const Triangles& triangles, Index num_verti
   return labels;
 }
 
-VertexCorners corners_by_vertex(const Triangles& triangles, Index num_vertices, bool links) {
+VertexCorners corners_by_vertex(const Triangles& triangles, Index num_vertices, CornerParts parts) {
   const Index num_corners = 3 * static_cast<Index>(triangles.rows());
   VertexCorners corners;
   corners.start.assign(static_cast<std::size_t>(num_vertices) + 1, 0);
   for (Index c = 0; c < num_corners; ++c) ++corners.start[static_cast<std::size_t>(corner_vertex(triangles, c)) + 1];
   std::partial_sum(corners.start.begin(), corners.start.end(), corners.start.begin());
-  corners.corner.resize(static_cast<std::size_t>(num_corners));
+  const bool with_corners = parts != CornerParts::Links, links = parts != CornerParts::Corners;
+  if (with_corners) corners.corner.resize(static_cast<std::size_t>(num_corners));
   if (links) corners.link.resize(static_cast<std::size_t>(num_corners));
   std::vector<Index> fill(corners.start.begin(), corners.start.end() - 1);
   const Index* index = triangles.data();
   for (Index c = 0; c < num_corners; c += 3) {
     const Index a = index[c], b = index[c + 1], d = index[c + 2];
     const Index at[3] = {fill[a]++, fill[b]++, fill[d]++};
-    for (int k = 0; k < 3; ++k) corners.corner[static_cast<std::size_t>(at[k])] = c + k;
+    if (with_corners)
+      for (int k = 0; k < 3; ++k) corners.corner[static_cast<std::size_t>(at[k])] = c + k;
     if (!links) continue;
     corners.link[static_cast<std::size_t>(at[0])] = {b, d};
     corners.link[static_cast<std::size_t>(at[1])] = {d, a};
@@ -264,7 +267,7 @@ MeshTopology analyze_topology(const Mesh& mesh) {
   // join their corners there into one fan; two boundary edges at a vertex
   // continue each other when they bound the same fan there (as if the vertex
   // were split into its fans); the endpoints of every edge join one component.
-  const VertexCorners corners = corners_by_vertex(triangles, num_vertices, true);
+  const VertexCorners corners = corners_by_vertex(triangles, num_vertices, CornerParts::Both);
   VertexStar star(num_vertices);
   DisjointSets fans;  // over the corners of one vertex, by their position among them
   DisjointSets components(num_vertices);

@@ -51,8 +51,8 @@ MeshTopology analyze_topology(const Mesh& mesh);
 /// triangle, in triangle order.
 struct VertexCorners {
   std::vector<Index> start;   ///< #V + 1
-  std::vector<Index> corner;  ///< 3 #F
-  /// Beside each corner of `corner` (when asked for): the two other vertices
+  std::vector<Index> corner;  ///< 3 #F (when asked for)
+  /// Beside each corner position (when asked for): the two other vertices
   /// of its triangle, the next and the previous in the triangle's order, so
   /// that a pass over a vertex's corners reads them in sequence instead of
   /// looking each triangle up (the triangles of a star lie far apart in a
@@ -62,9 +62,17 @@ struct VertexCorners {
   Index degree(Index v) const { return start[v + 1] - start[v]; }  ///< incident triangles
 };
 
-/// Corners of `triangles` grouped by vertex, by a counting sort: O(#V + #F);
-/// with `links`, VertexCorners::link too. Indices must lie in [0, num_vertices).
-VertexCorners corners_by_vertex(const Triangles& triangles, Index num_vertices, bool links = false);
+/// Which arrays of VertexCorners corners_by_vertex fills beside `start`.
+enum class CornerParts {
+  Corners,  ///< `corner`
+  Links,    ///< `link`
+  Both,     ///< `corner` and `link`
+};
+
+/// Corners of `triangles` grouped by vertex, by a counting sort: O(#V + #F).
+/// Indices must lie in [0, num_vertices).
+VertexCorners corners_by_vertex(const Triangles& triangles, Index num_vertices,
+                                CornerParts parts = CornerParts::Corners);
 
 /// Vertex-connected components of `triangles` over `num_vertices` vertices.
 struct ComponentLabels {
