@@ -191,10 +191,11 @@ void BM_MeshGraph_Torus100kFaces(benchmark::State& state) {
 }
 BENCHMARK(BM_MeshGraph_Torus100kFaces)->Unit(benchmark::kMillisecond);
 
-// The full passes of the default feature step + f_q over every mesh of a
-// folder (issue 23 aims at 5 per mesh): mean, max and the share at 5 or
-// fewer. Run once: the time is the whole folder's.
-void count_full_passes(benchmark::State& state, const std::filesystem::path& folder) {
+// The full passes of the feature step (default options unless given) + f_q
+// over every mesh of a folder (issue 23 aims at 5 per mesh): mean, max and
+// the share at 5 or fewer. Run once: the time is the whole folder's.
+void count_full_passes(benchmark::State& state, const std::filesystem::path& folder,
+                       const FeatureOptions& options = {}) {
   std::vector<Passes> passes;
   for (auto _ : state) {
     passes.clear();
@@ -202,8 +203,8 @@ void count_full_passes(benchmark::State& state, const std::filesystem::path& fol
       if (entry.path().extension() != ".off") continue;
       const Mesh mesh = load_mesh(entry.path()).components.front();
       const MeshGraph graph = build_mesh_graph(mesh);
-      const std::unique_ptr<GeodesicSolver> solver = make_geodesic_solver(graph, FeatureOptions{}.geodesic);
-      const FeaturePoints fp = extract_feature_points(mesh, graph, {}, *solver);
+      const std::unique_ptr<GeodesicSolver> solver = make_geodesic_solver(graph, options.geodesic);
+      const FeaturePoints fp = extract_feature_points(mesh, graph, options, *solver);
       passes.push_back(passes_of(fp, quotient_function(*solver, fp)));
     }
   }
@@ -253,6 +254,15 @@ void register_shrec() {
   })->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("BM_FullPasses_SHREC07All",
                                [unpacked](benchmark::State& state) { count_full_passes(state, unpacked); })
+      ->Unit(benchmark::kMillisecond)
+      ->Iterations(1);
+  // The same with the search held to four passes (FeatureOptions::max_search_passes).
+  benchmark::RegisterBenchmark("BM_FullPasses_SHREC07All/max_search_passes:4",
+                               [unpacked](benchmark::State& state) {
+                                 FeatureOptions options;
+                                 options.max_search_passes = 4;
+                                 count_full_passes(state, unpacked, options);
+                               })
       ->Unit(benchmark::kMillisecond)
       ->Iterations(1);
 }

@@ -170,6 +170,37 @@ TEST(FeaturePoints, ALongerSeedsSweepGoesOnFromItsOwnPass) {
   EXPECT_EQ(with_seed.sweeps, 1 + 2 + 1 + 1);
 }
 
+// A budget of passes bounds the search; one at least as large as the
+// passes the search spends without it changes nothing. A budget of two is
+// the first double sweep alone.
+TEST(FeaturePoints, TheSearchStaysWithinItsPassBudget) {
+  for (const int arms : {1, 3, 6}) {
+    const Mesh mesh = make_star(star(arms));
+    const MeshGraph g = build_mesh_graph(mesh);
+    for (const DiameterStart start : {DiameterStart::Centroid, DiameterStart::Vertex}) {
+      FeatureOptions options;
+      options.start = start;
+      options.extra_seeds = 2;
+      const FeaturePoints unlimited = extract_feature_points(mesh, g, options);
+      const int search = start == DiameterStart::Vertex ? 1 : 0;  // the Dijkstra pass from vertex 0
+      for (int budget = search + 2; budget <= unlimited.sweeps + 1; ++budget) {
+        SCOPED_TRACE(std::to_string(arms) + " arms, budget " + std::to_string(budget));
+        options.max_search_passes = budget;
+        const FeaturePoints fp = extract_feature_points(mesh, g, options);
+        EXPECT_LE(fp.sweeps, budget);
+        if (budget == search + 2) {
+          EXPECT_EQ(fp.sweeps, budget);
+        }
+        if (budget >= unlimited.sweeps) {
+          EXPECT_EQ(fp.source1, unlimited.source1);
+          EXPECT_EQ(fp.source2, unlimited.source2);
+          EXPECT_EQ(fp.vertices, unlimited.vertices);
+        }
+      }
+    }
+  }
+}
+
 // Under either method, in its own metric; f1 and f2 are the fields from
 // the two ends.
 TEST(FeaturePoints, DiameterEndsAreMutuallyFarthestFeaturePoints) {

@@ -20,6 +20,7 @@ AnalysisOptions changed() {
   o.features.start_vertex = 7;
   o.features.max_extra_sweeps = 1;
   o.features.extra_seeds = 0;
+  o.features.max_search_passes = 4;
   o.features.protrusion_persistence = 0.05;
   o.features.site = FeatureSite::Extremum;
   o.features.rule = FeatureRule::Center;

@@ -431,11 +431,15 @@ FeaturePoints extract_feature_points(const Mesh& mesh, const MeshGraph& graph, c
       start = found.s1;
       passes = found.passes;
     }
-    ends = find_diameter_ends(solver, start, options.max_extra_sweeps, {true, true});
+    const int budget = options.max_search_passes > 0 ? options.max_search_passes : std::numeric_limits<int>::max();
+    const auto extras_within = [&](int reserved) {  // extra sweeps that leave `reserved` passes of the budget
+      return std::max(0, std::min(budget - passes - reserved, options.max_extra_sweeps));
+    };
+    ends = find_diameter_ends(solver, start, extras_within(2), {true, true});
     passes += ends.passes;
     std::vector<double> to_ends;
     add_ends(to_ends, ends);
-    for (int k = 0; k < options.extra_seeds; ++k) {
+    for (int k = 0; k < options.extra_seeds && passes + 2 <= budget; ++k) {
       const Index seed = grid_farthest(to_ends);
       DiameterEnds other = find_diameter_ends(solver, seed, 0, {true, true, Keep::Length});
       passes += other.passes;
@@ -445,7 +449,7 @@ FeaturePoints extract_feature_points(const Mesh& mesh, const MeshGraph& graph, c
       const double unit = kTieGrid * ends.length();
       if (!(std::round(other.length() / unit) > std::round(ends.length() / unit))) continue;
       // The sweep from the seed goes on from its first pass, already run.
-      passes += complete_sweep(solver, other, options.max_extra_sweeps, true);
+      passes += complete_sweep(solver, other, extras_within(1), true);
       ends = std::move(other);
       add_ends(to_ends, ends);
     }

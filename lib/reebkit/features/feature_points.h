@@ -129,6 +129,15 @@ struct FeatureOptions {
   /// pass from it, and the sweep from it only where that pass finds a longer
   /// diameter (docs/results.md, "Farthest-point seeds in the chosen metric").
   int extra_seeds = 1;
+  /// At most this many full passes for v_s1, v_s2, f1 and f2 together (0: no
+  /// limit): the extra sweeps of the first sweep stop two passes short of it,
+  /// and a farthest-point seed is tried only while two passes remain (its own
+  /// and the pass from its far end), its extra sweeps within what is left;
+  /// the first double sweep always runs. Not applied to the Dijkstra search
+  /// of DiameterStart::Vertex. A bound on the time of a large mesh; a cut
+  /// sweep can leave ends that are not mutually farthest (docs/results.md,
+  /// "A budget of search passes").
+  int max_search_passes = 0;
   /// How the geodesic distances of the step are computed: f1, f2 and the
   /// epsilon balls (analyze_mesh uses the same method for f_q and the
   /// attributes). Dijkstra follows mesh edges, whose zig-zag error

@@ -70,6 +70,8 @@ const std::vector<AnalysisOptionField>& analysis_option_fields() {
             [](auto& o) -> auto& { return o.features.max_extra_sweeps; }, OptionRange{0}),
       field("extra_seeds", "further diameter sweeps from farthest-point seeds",
             [](auto& o) -> auto& { return o.features.extra_seeds; }, OptionRange{0}),
+      field("max_search_passes", "full passes for the diameter ends, f1 and f2 together at most (0: no limit)",
+            [](auto& o) -> auto& { return o.features.max_search_passes; }, OptionRange{0}),
       field("protrusion_persistence",
             "also make a feature point of every extremum of f1 or f2 persisting at least this fraction of the "
             "diameter that lies more than 2 epsilon from every feature point (0: off, eq. 6 alone)",
