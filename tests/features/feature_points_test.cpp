@@ -171,8 +171,9 @@ TEST(FeaturePoints, ALongerSeedsSweepGoesOnFromItsOwnPass) {
 }
 
 // A budget of passes bounds the search; one at least as large as the
-// passes the search spends without it changes nothing. A budget of two is
-// the first double sweep alone.
+// passes the search spends without it changes nothing. The smallest budget
+// (two; three from vertex 0, whose Dijkstra pass counts) is the first
+// double sweep alone.
 TEST(FeaturePoints, TheSearchStaysWithinItsPassBudget) {
   for (const int arms : {1, 3, 6}) {
     const Mesh mesh = make_star(star(arms));

@@ -133,10 +133,10 @@ struct FeatureOptions {
   /// limit): the extra sweeps of the first sweep stop two passes short of it,
   /// and a farthest-point seed is tried only while two passes remain (its own
   /// and the pass from its far end), its extra sweeps within what is left;
-  /// the first double sweep always runs. Not applied to the Dijkstra search
-  /// of DiameterStart::Vertex. A bound on the time of a large mesh; a cut
-  /// sweep can leave ends that are not mutually farthest (docs/results.md,
-  /// "A budget of search passes").
+  /// the first double sweep always runs. Not applied under Dijkstra with
+  /// DiameterStart::Vertex (layout 10's search). A bound on the time of a
+  /// large mesh; a cut sweep can leave ends that are not mutually farthest
+  /// (docs/results.md, "A budget of search passes").
   int max_search_passes = 0;
   /// How the geodesic distances of the step are computed: f1, f2 and the
   /// epsilon balls (analyze_mesh uses the same method for f_q and the
