@@ -48,41 +48,20 @@ step() {  # step NAME COMMAND...: runs it and says how long it took
 printf 'step\tseconds\n' > "$work/steps.tsv"
 git -C "$source_dir" rev-parse --short HEAD > "$work/commit" 2>/dev/null || echo "?" > "$work/commit"
 
-# Closed CGAL meshes with a shape (500-20,000 vertices, one component), and
-# one pose per TOSCA class.
-cgal=()
-for m in anchor_dense bear bull cactus camel couplingdown cow dino elephant elk femur hand homer knot1 man \
-         rotor_small triceratops turbine; do
-  cgal+=("$data/cgal_meshes/$m.off")
-done
-tosca=()
-for m in cat0 centaur0 dog0 horse0 michael0; do tosca+=("$data/tosca_dev/$m.off"); done
+# shellcheck source=experiments/robustness_sections.sh
+source "$source_dir/experiments/robustness_sections.sh"
 
 step "1, 4, 5: every SHREC07 mesh: similarities, graphs, hand-picked points" \
   "$robustness" rigid "$work" "$shrec" "$cla" "$similarities"
-step "2: sampling, SHREC07 ($per_class per class)" "$robustness" shrec-sample "$work" "$shrec" "$cla" "$per_class"
-step "2: sampling, closed CGAL meshes" "$robustness" sampling "$work" cgal "${cgal[@]}"
-step "2: sampling, TOSCA (one pose per class)" "$robustness" sampling "$work" tosca "${tosca[@]}"
-step "3: TOSCA poses" "$robustness" tosca "$work" "$data/tosca_dev"
+sampling_and_poses "today's defaults" "$work"
 # The defaults of earlier layouts, side by side with today's in the report.
 mkdir -p "$work/layout8"
 step "3: TOSCA poses, the feature points of layout 8 (epsilon 0.05, persistence 0.01, on the extrema)" \
   "$robustness" --option epsilon=0.05 --option min_persistence=0.01 --option feature_site=extremum \
   tosca "$work/layout8" "$data/tosca_dev"
-# earlier NAME FOLDER OPTION...: the sampling and pose sections again into
-# $work/FOLDER under an earlier default.
-earlier() {
-  local name=$1 folder=$work/$2
-  shift 2
-  local run=("$robustness" "$@")
-  mkdir -p "$folder"
-  step "2, 3: $name: SHREC07" "${run[@]}" shrec-sample "$folder" "$shrec" "$cla" "$per_class"
-  step "2, 3: $name: CGAL" "${run[@]}" sampling "$folder" cgal "${cgal[@]}"
-  step "2, 3: $name: TOSCA" "${run[@]}" sampling "$folder" tosca "${tosca[@]}"
-  step "2, 3: $name: TOSCA poses" "${run[@]}" tosca "$folder" "$data/tosca_dev"
-}
-earlier "the diameter search of layout 10 (from vertex 0)" layout10 --option diameter_start=vertex
-earlier "the feature points of layout 14 (halfway between their two extrema)" layout14 --option feature_site=midpoint
+sampling_and_poses "the diameter search of layout 10 (from vertex 0)" "$work/layout10" --option diameter_start=vertex
+sampling_and_poses "the feature points of layout 14 (halfway between their two extrema)" "$work/layout14" \
+  --option feature_site=midpoint
 step "6: timing" env OMP_NUM_THREADS=1 "$robustness" timing "$work" "$data/tosca_dev/michael0.off" 2000 10000 40000 100000
 printf 'total\t%s\n' "$((SECONDS - start_all))" >> "$work/steps.tsv"
 step "report and plots" /usr/bin/python3 "$source_dir/tools/figures/robustness_report.py" "$work" "$report"

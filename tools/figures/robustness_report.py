@@ -5,6 +5,12 @@ REPORT/report.md with its PNG plots. Each section states the claim of Tierny
 et al. 2006, the measured number and whether it holds.
 
 usage: robustness_report.py WORK REPORT
+       robustness_report.py --compare WORK...
+
+--compare prints, as one Markdown table, the figures issue 22 aims at for
+each WORK folder that holds sections 2 and 3 (experiments/robustness.sh's,
+experiments/robustness_probe.sh's, named with the options of the probe):
+fast marching, the default method.
 """
 import csv
 import platform
@@ -440,7 +446,40 @@ def cpu_name():
     return "unknown CPU"
 
 
+def compare(folders):
+    """The Markdown table of robustness_report.py --compare."""
+    out = ["| folder | 50 % decimation: all / 3+ points / 2 points / same nodes | 1x remeshing: the same | "
+           "noise 0.25 %: all / same nodes | TOSCA poses: forward / same nodes as the first / as the class's "
+           "most common |",
+           "|---|---|---|---|---|"]
+    for work in folders:
+        groups = by_variant(sampling_rows(work))
+        options = work / "options"  # robustness_probe.sh's
+        cells = [work.name + (f" (`{options.read_text().strip()}`)" if options.exists() else "")]
+        for kind, strength, detailed in (("decimate", 0.5, True), ("remesh", 1.0, True), ("noise", 0.0025, False)):
+            rows = groups.get((kind, strength, "fmm"), [])
+            if not rows:
+                cells.append("-")
+                continue
+            every = summarize(rows)
+            parts = [every["forward"]]
+            if detailed:
+                parts += [summarize(three_or_more(rows))["forward"],
+                          summarize([r for r in rows if int(r["features"]) <= 2])["forward"]]
+            cells.append(" / ".join(pct(x) if x == x else "-" for x in parts + [every["nodes"]]) +
+                         f" ({every['n']})")  # "-": no such mesh
+        poses = [r for r in read(work / "tosca_poses.csv") if r["method"] == "fmm"]
+        cells.append(" / ".join(pct(x) for x in (mean(float(r["forward"]) for r in poses),
+                                                 mean(r["nodes"] == r["reference_nodes"] for r in poses),
+                                                 mode_share(poses, "fmm"))))
+        out.append("| " + " | ".join(cells) + " |")
+    return "\n".join(out)
+
+
 def main():
+    if len(sys.argv) >= 3 and sys.argv[1] == "--compare":
+        print(compare([Path(a) for a in sys.argv[2:]]))
+        return
     if len(sys.argv) != 3:
         sys.exit(__doc__)
     work, report = Path(sys.argv[1]), Path(sys.argv[2])
