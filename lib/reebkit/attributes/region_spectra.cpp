@@ -170,21 +170,10 @@ SpectraSurface spectra_surface(const Mesh& mesh, const SpectraOptions& options) 
     // No frame of its own (a rotational symmetry): the copy's coordinates,
     // snapped in a frame that turns with the rounding, and its order would
     // differ between similar copies; the surface as given does not.
-    out.global = global_spectrum(mesh, out.axis_gap, options);
-    if (options.regions) {
-      out.mesh = mesh;
-      out.original_vertex.resize(at(mesh.num_vertices()));
-      std::iota(out.original_vertex.begin(), out.original_vertex.end(), Index{0});
-    }
-    return out;
-  }
-  CanonicalCopy canonical = canonical_copy(mesh, frame);
-  // The whole surface's copy straight from the canonical copy, whatever its
-  // size and the regions option: one decimation, and values that do not
-  // depend on the fine copy below.
-  out.global = global_spectrum(canonical.mesh, out.axis_gap, options);
-  if (!options.regions) return out;
-  if (mesh.num_vertices() > options.fine_vertices) {
+    out.mesh = mesh;
+    out.original_vertex.resize(at(mesh.num_vertices()));
+    std::iota(out.original_vertex.begin(), out.original_vertex.end(), Index{0});
+  } else if (CanonicalCopy canonical = canonical_copy(mesh, frame); mesh.num_vertices() > options.fine_vertices) {
     // The size of this copy matters little (a loose tolerance: one try).
     MeshVariant fine =
         decimated_or_whole(canonical.mesh,
@@ -195,6 +184,7 @@ SpectraSurface spectra_surface(const Mesh& mesh, const SpectraOptions& options) 
     out.mesh = std::move(canonical.mesh);
     out.original_vertex = std::move(canonical.original_vertex);
   }
+  out.global = global_spectrum(out.mesh, out.axis_gap, options);
   return out;
 }
 
@@ -219,9 +209,6 @@ SurfaceSpectra surface_spectra(const Mesh& mesh, const SpectraSurface& prepared,
       throw InvalidArgument("surface_spectra: " + where + ": region label " + std::to_string(r) + " outside [0, " +
                             std::to_string(regions) + ")");
   check_options(options);
-  if (options.regions && prepared.mesh.num_vertices() == 0)
-    throw InvalidArgument("surface_spectra: " + where +
-                          ": the regions' spectra asked of a spectra surface prepared without them");
   const int n = kRegionSpectrumLength;
   SurfaceSpectra out;
   out.global = prepared.global;
