@@ -130,10 +130,12 @@ TEST(RegionSpectra, SimilarityAndRenumberingLeaveTheSpectraUnchanged) {
   EXPECT_LT(largest_change_under_similarity(star, labels_by_height(star), 2, fine), 1e-6);
 }
 
-// A surface of more than fine_vertices vertices is decimated once to about
-// that many, and its coarse copies are taken from there: the spectra stay
-// those of the surface (the bunny's subdivided once, its regions cut at
-// mid-height).
+// With the regions' spectra, a surface of more than fine_vertices vertices is
+// decimated once to about that many, and the regions' coarse copies are
+// taken from there: their spectra stay those of the surface (the bunny's
+// subdivided once, its regions cut at mid-height). The whole surface's copy
+// is taken from the surface itself: its values depend neither on
+// fine_vertices nor on the regions option.
 TEST(RegionSpectra, ALargeSurfaceDecimatedOnceFirstKeepsItsSpectra) {
   const Mesh bunny = subdivide_mesh(load_mesh(test::embedded_dataset_dir() / "bunny.off").components.front(), 1)
                          .mesh;  // 7,352 vertices
@@ -160,8 +162,15 @@ TEST(RegionSpectra, ALargeSurfaceDecimatedOnceFirstKeepsItsSpectra) {
     largest = std::max(largest, std::abs(staged.region[k] - direct.region[k]));
   EXPECT_GT(direct.region[0], 0.0);
   EXPECT_LT(largest, 0.01);
-  // The whole surface's spectrum is the one prepared with the surface.
+  // The whole surface's spectrum is the one prepared with the surface, and
+  // the same without the fine copy or without the regions.
   EXPECT_EQ(staged.global, surface.global);
+  EXPECT_EQ(direct.global, surface.global);
+  const SpectraSurface without_regions = spectra_surface(bunny, SpectraOptions{});
+  EXPECT_EQ(without_regions.global, surface.global);
+  EXPECT_EQ(without_regions.mesh.num_vertices(), 0);
+  EXPECT_THROW(surface_spectra(bunny, without_regions, label, 2, options), InvalidArgument);
+  EXPECT_EQ(surface_spectra(bunny, without_regions, label, 2, SpectraOptions{}).global, surface.global);
   // A surface prepared for another mesh, or not by spectra_surface, is refused.
   const Mesh other = make_icosphere(3);
   EXPECT_THROW(surface_spectra(other, surface, std::vector<Index>(static_cast<std::size_t>(other.num_vertices()), 0), 1,

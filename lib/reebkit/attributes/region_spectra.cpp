@@ -123,10 +123,17 @@ double coarse_ratio(const Mesh& surface, double axis_gap, Index vertices, const 
 /// cannot repair, or cuts the piece in two: slower, not wrong.
 Mesh coarsened(const Mesh& piece, double ratio) { return decimated_or_whole(piece, ratio, 0.05).mesh; }
 
-/// SurfaceSpectra::global of `surface` (the spectra surface, of frame gap
-/// `axis_gap`).
+/// SurfaceSpectra::global of `surface` (the canonical copy of a mesh, or the
+/// mesh itself where it has no frame of its own, of frame gap `axis_gap`),
+/// computed on its copy of about global_vertices decimated straight from
+/// it, whatever its size, so that a fine and a coarse sampling of one shape
+/// get the same kind of copy. Where that copy cannot be made (the
+/// decimation cut a thin part off, or left a triangle it cannot repair) or
+/// its operator cannot be solved: the same from a copy of about
+/// fine_vertices of a larger surface (a milder decimation first), then on
+/// the surface itself; zeros where none can be taken (a handful of
+/// vertices), as for a region too small.
 std::vector<double> global_spectrum(const Mesh& surface, double axis_gap, const SpectraOptions& options) {
-  const Mesh global_copy = coarsened(surface, coarse_ratio(surface, axis_gap, options.global_vertices, options));
   std::vector<double> out(at(kGlobalSpectrumLength + kGlobalHeatLength), 0.0);
   ShapeDnaOptions global;
   global.eigenvalues = kGlobalSpectrumLength;
@@ -136,20 +143,30 @@ std::vector<double> global_spectrum(const Mesh& surface, double axis_gap, const 
   const HeatKernelOptions heat;
   if (heat.times.size() * at(heat.quantiles) != at(kGlobalHeatLength))
     throw std::logic_error("global_spectrum: HeatKernelOptions does not give kGlobalHeatLength values");
-  // The global copy; where the operator or the iterations cannot take it,
-  // the surface itself; where they cannot take that either (a handful of
-  // vertices), zeros, as for a region too small.
-  for (const Mesh* m : {&global_copy, &surface}) {
+  const auto computed_on = [&](const Mesh& m) {
     try {
-      const ShapeDna dna = shape_dna(*m, global);
+      const ShapeDna dna = shape_dna(m, global);
       squash(dna, kGlobalSpectrumLength, out.data());
       const std::vector<double> quantiles = heat_kernel_quantiles(dna, heat);
       for (std::size_t i = 0; i < quantiles.size(); ++i)
         out[at(kGlobalSpectrumLength) + i] = 1.0 / (1.0 + std::exp(-quantiles[i]));  // r / (1 + r), r = e^q
-      break;
+      return true;
     } catch (const InvalidMeshError&) {
+      return false;
+    }
+  };
+  const Index n = surface.num_vertices();
+  const double ratio = coarse_ratio(surface, axis_gap, options.global_vertices, options);
+  if (ratio < 1.0) {  // a frame of its own, and more vertices than the copy
+    const Mesh copy = coarsened(surface, ratio);
+    if (copy.num_vertices() < n && computed_on(copy)) return out;
+    if (n > options.fine_vertices) {
+      const Mesh fine =
+          decimated_or_whole(surface, static_cast<double>(options.fine_vertices) / static_cast<double>(n), 0.25).mesh;
+      if (fine.num_vertices() < n) return global_spectrum(fine, axis_gap, options);
     }
   }
+  computed_on(surface);
   return out;
 }
 
@@ -170,10 +187,20 @@ SpectraSurface spectra_surface(const Mesh& mesh, const SpectraOptions& options) 
     // No frame of its own (a rotational symmetry): the copy's coordinates,
     // snapped in a frame that turns with the rounding, and its order would
     // differ between similar copies; the surface as given does not.
-    out.mesh = mesh;
-    out.original_vertex.resize(at(mesh.num_vertices()));
-    std::iota(out.original_vertex.begin(), out.original_vertex.end(), Index{0});
-  } else if (CanonicalCopy canonical = canonical_copy(mesh, frame); mesh.num_vertices() > options.fine_vertices) {
+    out.global = global_spectrum(mesh, out.axis_gap, options);
+    if (options.regions) {
+      out.mesh = mesh;
+      out.original_vertex.resize(at(mesh.num_vertices()));
+      std::iota(out.original_vertex.begin(), out.original_vertex.end(), Index{0});
+    }
+    return out;
+  }
+  CanonicalCopy canonical = canonical_copy(mesh, frame);
+  // The whole surface's values from the canonical copy, whatever its size
+  // and the regions option: they do not depend on the fine copy below.
+  out.global = global_spectrum(canonical.mesh, out.axis_gap, options);
+  if (!options.regions) return out;
+  if (mesh.num_vertices() > options.fine_vertices) {
     // The size of this copy matters little (a loose tolerance: one try).
     MeshVariant fine =
         decimated_or_whole(canonical.mesh,
@@ -184,7 +211,6 @@ SpectraSurface spectra_surface(const Mesh& mesh, const SpectraOptions& options) 
     out.mesh = std::move(canonical.mesh);
     out.original_vertex = std::move(canonical.original_vertex);
   }
-  out.global = global_spectrum(out.mesh, out.axis_gap, options);
   return out;
 }
 
@@ -209,6 +235,9 @@ SurfaceSpectra surface_spectra(const Mesh& mesh, const SpectraSurface& prepared,
       throw InvalidArgument("surface_spectra: " + where + ": region label " + std::to_string(r) + " outside [0, " +
                             std::to_string(regions) + ")");
   check_options(options);
+  if (options.regions && prepared.mesh.num_vertices() == 0)
+    throw InvalidArgument("surface_spectra: " + where +
+                          ": the regions' spectra asked of a spectra surface prepared without them");
   const int n = kRegionSpectrumLength;
   SurfaceSpectra out;
   out.global = prepared.global;

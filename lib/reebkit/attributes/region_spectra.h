@@ -23,11 +23,13 @@
 // solver's time grows with the vertex count. The whole surface's spectrum
 // is computed on a finer copy (SpectraOptions::global_vertices): it has to
 // tell apart people whose proportions differ by a few percent, within the
-// error of the linear elements on the coarse copy. A surface
-// of more than SpectraOptions::fine_vertices vertices is first decimated
-// once to about that many (spectra_surface), and the coarse copy and the
-// regions are taken from that: one decimation of the large surface instead
-// of one for it and one for its regions, each a pass over every vertex. A
+// error of the linear elements on the coarse copy; it is decimated straight
+// from the surface whatever its size, so that a fine and a coarse sampling
+// of one shape get the same kind of copy. With the regions' spectra, a surface of more than
+// SpectraOptions::fine_vertices vertices is first decimated once to about
+// that many (spectra_surface), and the regions are cut from that: one
+// decimation of the large surface for all of them, instead of one per
+// region, each a pass over every vertex. A
 // decimation depends on the frame, the rounding and the vertex order of its
 // input, so it is done on the surface's canonical copy (canonical_copy,
 // mesh/transform.h), which similar copies share: the values are the same for
@@ -64,11 +66,11 @@ struct SpectraOptions {
   /// with it) gets zeros: too few coarse vertices to resolve its first
   /// eigenvalues (about coarse_vertices x share). In [0, 1].
   double min_region_area = 0.01;
-  /// A surface of more vertices is first decimated once to about this many
-  /// (spectra_surface), from which the coarse copies are taken. Far above
-  /// coarse_vertices, so that the regions' borders cut from it are finer
-  /// than an edge of their coarse copies (the whole surface's spectrum is
-  /// then computed on it when global_vertices is larger). >= coarse_vertices.
+  /// With the regions' spectra, a surface of more vertices is first
+  /// decimated once to about this many (spectra_surface), from which the
+  /// regions' coarse copies are taken. Far above coarse_vertices, so that
+  /// the regions' borders cut from it are finer than an edge of their coarse
+  /// copies. The whole surface's copy does not depend on it. >= coarse_vertices.
   Index fine_vertices = 120000;
   /// Compute the regions' spectra (SurfaceSpectra::region). Off by default:
   /// the default matching cost does not compare them (its r term has weight
@@ -78,13 +80,18 @@ struct SpectraOptions {
   bool regions = false;
 };
 
-/// The surface the spectra are computed on: the canonical copy of a mesh
-/// (canonical_copy, mesh/transform.h), decimated to about
-/// SpectraOptions::fine_vertices vertices where it has more; the mesh as
-/// given where its frame is ill-defined (axis_gap below
-/// SpectraOptions::min_axis_gap). It depends on the mesh alone, not on its Reeb graph, so it
-/// can be prepared while the graph is built (analyze_mesh).
+/// What the spectra of a mesh are computed from, prepared from the mesh
+/// alone (not its Reeb graph), so that it can be done while the graph is
+/// built (analyze_mesh): the whole surface's values, computed on the
+/// canonical copy of the mesh (canonical_copy, mesh/transform.h) decimated
+/// to about SpectraOptions::global_vertices, and, with
+/// SpectraOptions::regions, the surface the regions are cut from: the
+/// canonical copy, decimated to about SpectraOptions::fine_vertices
+/// vertices where it has more. Both on the mesh as given where its frame is
+/// ill-defined (axis_gap below SpectraOptions::min_axis_gap).
 struct SpectraSurface {
+  /// The surface the regions are cut from; empty without
+  /// SpectraOptions::regions.
   Mesh mesh;
   /// #V of `mesh`: the vertex of the input that vertex v is.
   std::vector<Index> original_vertex;
@@ -93,14 +100,14 @@ struct SpectraSurface {
   /// SurfaceFrame::axis_gap of the input.
   double axis_gap = 0.0;
   /// SurfaceSpectra::global: the whole surface's values need no regions,
-  /// so they are computed with the surface, while the graph is built.
+  /// so they are computed here, while the graph is built.
   std::vector<double> global;
   /// `mesh` is a decimation of the canonical copy (not the copy itself).
   bool decimated() const { return mesh.num_vertices() < input_vertices; }
 };
 
-/// The surface the spectra of `mesh` are computed on, and its spectrum.
-/// Throws InvalidArgument for options out of range.
+/// The whole surface's spectrum of `mesh` and, with the regions' spectra, the
+/// surface they are cut from. Throws InvalidArgument for options out of range.
 SpectraSurface spectra_surface(const Mesh& mesh, const SpectraOptions& options = {});
 
 struct SurfaceSpectra {
@@ -131,8 +138,9 @@ SurfaceSpectra surface_spectra(const Mesh& mesh, const std::vector<Index>& verte
                                const SpectraOptions& options = {});
 
 /// The same on `surface`, the spectra_surface of `mesh` with the same
-/// options, prepared beforehand. Throws InvalidArgument as above, and for a
-/// surface of another vertex count.
+/// options, prepared beforehand. Throws InvalidArgument as above, for a
+/// surface of another vertex count, and for SpectraOptions::regions on a
+/// surface prepared without them.
 SurfaceSpectra surface_spectra(const Mesh& mesh, const SpectraSurface& surface, const std::vector<Index>& vertex_region,
                                Index regions, const SpectraOptions& options = {});
 

@@ -48,7 +48,7 @@ MeshAnalysis analyze_mesh(Mesh mesh, const AnalysisOptions& options) {
 }
 
 GraphAttributes compute_attributes(const MeshAnalysis& analysis) {
-  const bool prepared = analysis.spectra.mesh.num_vertices() > 0;
+  const bool prepared = !analysis.spectra.global.empty();
   return compute_attributes(analysis.mesh, analysis.graph, analysis.fq.value, analysis.features, analysis.reeb,
                             prepared ? &analysis.spectra : nullptr, analysis.spectra_options);
 }

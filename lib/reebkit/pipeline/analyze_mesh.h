@@ -50,9 +50,9 @@ struct MeshAnalysis {
   FeaturePoints features;
   QuotientFunction fq;
   ReebGraph reeb;  ///< empty when options.reeb_graph is false
-  /// The surface the attributes' spectra are computed on, and its spectrum
-  /// (spectra_surface, region_spectra.h); empty unless options.reeb_graph and
-  /// options.spectra_surface.
+  /// The whole surface's spectrum and, with the regions' spectra, the
+  /// surface they are cut from (spectra_surface, region_spectra.h); empty
+  /// unless options.reeb_graph and options.spectra_surface.
   SpectraSurface spectra;
   SpectraOptions spectra_options;  ///< AnalysisOptions::spectra, for compute_attributes
   AnalysisTimings timings;
