@@ -226,6 +226,38 @@ TEST(RegionSpectra, NearSymmetricShapeKeepsItsSpectraUnderSimilarity) {
   }
 }
 
+// Where the decimation straight to the whole surface's copy cuts a thin part
+// off (SHREC07's glasses, 45: their copy of a quarter of the vertices falls
+// in two at a temple), the copy is taken from a milder one of about
+// fine_vertices: the values then depend on fine_vertices, which they do not
+// where the direct copy holds, and stay near those of the surface itself.
+TEST(RegionSpectra, ACopyThatFallsApartIsTakenFromAMilderOne) {
+  REEBKIT_REQUIRE_DATASET(dir, "shrec07_watertight");
+  const Mesh glasses = load_mesh(dir / "45.off").components.front();  // 5,399 vertices
+  SpectraOptions quarter;
+  quarter.coarse_vertices = 100;
+  quarter.global_vertices = glasses.num_vertices() / 4;
+  SpectraOptions milder = quarter, larger = quarter;
+  milder.fine_vertices = glasses.num_vertices() / 2;  // the fallback's copy, which holds together
+  larger.fine_vertices = glasses.num_vertices() + 1;  // none: the surface itself
+  const std::vector<double> from_milder = spectra_surface(glasses, milder).global,
+                            whole = spectra_surface(glasses, larger).global;
+  EXPECT_NE(from_milder, whole);
+  double largest = 0.0;
+  for (std::size_t k = 0; k < whole.size(); ++k) {
+    EXPECT_GT(from_milder[k], 0.0) << k;
+    largest = std::max(largest, std::abs(from_milder[k] - whole[k]));
+  }
+  EXPECT_LT(largest, 0.05);
+  // Where the direct copy holds (half the vertices), fine_vertices does not matter.
+  SpectraOptions half = milder;
+  half.global_vertices = glasses.num_vertices() / 2;
+  half.fine_vertices = glasses.num_vertices() / 4 * 3;
+  SpectraOptions half_larger = half;
+  half_larger.fine_vertices = glasses.num_vertices() + 1;
+  EXPECT_EQ(spectra_surface(glasses, half).global, spectra_surface(glasses, half_larger).global);
+}
+
 TEST(RegionSpectra, SmallRegionsGetZerosAndBadInputIsRefused) {
   const Mesh sphere = make_icosphere(3);
   std::vector<Index> label(static_cast<std::size_t>(sphere.num_vertices()), 0);

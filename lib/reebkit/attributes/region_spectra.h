@@ -102,8 +102,9 @@ struct SpectraSurface {
   /// SurfaceSpectra::global: the whole surface's values need no regions,
   /// so they are computed here, while the graph is built.
   std::vector<double> global;
-  /// `mesh` is a decimation of the canonical copy (not the copy itself).
-  bool decimated() const { return mesh.num_vertices() < input_vertices; }
+  /// `mesh` is a decimation of the canonical copy (not the copy itself, nor
+  /// empty).
+  bool decimated() const { return mesh.num_vertices() > 0 && mesh.num_vertices() < input_vertices; }
 };
 
 /// The whole surface's spectrum of `mesh` and, with the regions' spectra, the
