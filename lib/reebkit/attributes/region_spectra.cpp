@@ -123,6 +123,15 @@ double coarse_ratio(const Mesh& surface, double axis_gap, Index vertices, const 
 /// cannot repair, or cuts the piece in two: slower, not wrong.
 Mesh coarsened(const Mesh& piece, double ratio) { return decimated_or_whole(piece, ratio, 0.05).mesh; }
 
+/// The copy of about fine_vertices of `surface` (which has more), or the
+/// surface where the decimation cannot make it: its size matters little (a
+/// loose tolerance, one try).
+MeshVariant fine_copy(const Mesh& surface, const SpectraOptions& options) {
+  return decimated_or_whole(surface,
+                            static_cast<double>(options.fine_vertices) / static_cast<double>(surface.num_vertices()),
+                            0.25);
+}
+
 /// SurfaceSpectra::global of `surface` (the canonical copy of a mesh, or the
 /// mesh itself where it has no frame of its own, of frame gap `axis_gap`),
 /// computed on its copy of about global_vertices decimated straight from
@@ -161,8 +170,7 @@ std::vector<double> global_spectrum(const Mesh& surface, double axis_gap, const 
     const Mesh copy = coarsened(surface, ratio);
     if (copy.num_vertices() < n && computed_on(copy)) return out;
     if (n > options.fine_vertices) {
-      const Mesh fine =
-          decimated_or_whole(surface, static_cast<double>(options.fine_vertices) / static_cast<double>(n), 0.25).mesh;
+      const Mesh fine = fine_copy(surface, options).mesh;
       if (fine.num_vertices() < n) return global_spectrum(fine, axis_gap, options);
     }
   }
@@ -201,10 +209,7 @@ SpectraSurface spectra_surface(const Mesh& mesh, const SpectraOptions& options) 
   out.global = global_spectrum(canonical.mesh, out.axis_gap, options);
   if (!options.regions) return out;
   if (mesh.num_vertices() > options.fine_vertices) {
-    // The size of this copy matters little (a loose tolerance: one try).
-    MeshVariant fine =
-        decimated_or_whole(canonical.mesh,
-                           static_cast<double>(options.fine_vertices) / static_cast<double>(mesh.num_vertices()), 0.25);
+    MeshVariant fine = fine_copy(canonical.mesh, options);
     out.mesh = std::move(fine.mesh);
     for (const Index v : fine.original_vertex) out.original_vertex.push_back(canonical.original_vertex[at(v)]);
   } else {
