@@ -24,16 +24,9 @@ report=${2:-$source_dir/results/robustness}
 export OMP_NUM_THREADS=${THREADS:-2}
 per_class=${PER_CLASS:-5}
 similarities=${SIMILARITIES:-5}
-data=$build/data
-shrec=$data/shrec07_watertight
-cla=$shrec/shrec07_watertight.cla
 work=$build/robustness
-robustness=$build/experiments/robustness
-
-[ -x "$robustness" ] || { echo "$0: $robustness is missing: build the target robustness" >&2; exit 1; }
-for d in "$cla" "$data/tosca_dev" "$data/cgal_meshes"; do
-  [ -e "$d" ] || { echo "$0: $d is missing: run ctest --test-dir $build -R unpack_datasets" >&2; exit 1; }
-done
+# shellcheck source=experiments/robustness_sections.sh
+source "$source_dir/experiments/robustness_sections.sh"
 mkdir -p "$work" "$report"
 start_all=$SECONDS
 
@@ -47,9 +40,6 @@ step() {  # step NAME COMMAND...: runs it and says how long it took
 }
 printf 'step\tseconds\n' > "$work/steps.tsv"
 git -C "$source_dir" rev-parse --short HEAD > "$work/commit" 2>/dev/null || echo "?" > "$work/commit"
-
-# shellcheck source=experiments/robustness_sections.sh
-source "$source_dir/experiments/robustness_sections.sh"
 
 step "1, 4, 5: every SHREC07 mesh: similarities, graphs, hand-picked points" \
   "$robustness" rigid "$work" "$shrec" "$cla" "$similarities"

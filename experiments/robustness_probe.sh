@@ -36,16 +36,9 @@ done
 source_dir=$(cd "$(dirname "$0")/.." && pwd)
 export OMP_NUM_THREADS=${THREADS:-2}
 per_class=${PER_CLASS:-5}
-data=$build/data
-shrec=$data/shrec07_watertight
-cla=$shrec/shrec07_watertight.cla
-robustness=$build/experiments/robustness
 probes=$build/robustness_probes
-
-[ -x "$robustness" ] || { echo "$0: $robustness is missing: build the target robustness" >&2; exit 1; }
-for d in "$cla" "$data/tosca_dev" "$data/cgal_meshes"; do
-  [ -e "$d" ] || { echo "$0: $d is missing: run ctest --test-dir $build -R unpack_datasets" >&2; exit 1; }
-done
+# shellcheck source=experiments/robustness_sections.sh
+source "$source_dir/experiments/robustness_sections.sh"
 
 step() {  # step NAME COMMAND...: runs it, its output into the probe's log, and says how long it took
   local label=$1 start=$SECONDS
@@ -54,8 +47,6 @@ step() {  # step NAME COMMAND...: runs it, its output into the probe's log, and 
   "$@" >> "$probes/$name/log" 2>&1 || { echo "$0: failed, see $probes/$name/log" >&2; exit 1; }
   echo "== $label: $((SECONDS - start)) s"
 }
-# shellcheck source=experiments/robustness_sections.sh
-source "$source_dir/experiments/robustness_sections.sh"
 
 rm -rf "${probes:?}/$name"
 mkdir -p "$probes/$name"

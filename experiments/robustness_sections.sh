@@ -1,8 +1,18 @@
 # What experiments/robustness.sh and experiments/robustness_probe.sh share;
-# sourced, never run. Expects data (BUILD_DIR/data), shrec and cla (the
-# SHREC07 folder and class file), per_class, robustness (the program) and a
-# function `step NAME COMMAND...`.
-# shellcheck shell=bash disable=SC2154  # the variables above come from the caller
+# sourced, never run. Expects build (the build folder), per_class and, when
+# sampling_and_poses runs, a function `step NAME COMMAND...`; sets data,
+# shrec, cla (the SHREC07 folder and class file) and robustness (the
+# program), and exits naming what is missing.
+# shellcheck shell=bash disable=SC2154  # build and per_class come from the caller
+
+data=$build/data
+shrec=$data/shrec07_watertight
+cla=$shrec/shrec07_watertight.cla
+robustness=$build/experiments/robustness
+[ -x "$robustness" ] || { echo "$0: $robustness is missing: build the target robustness" >&2; exit 1; }
+for d in "$cla" "$data/tosca_dev" "$data/cgal_meshes"; do
+  [ -e "$d" ] || { echo "$0: $d is missing: run ctest --test-dir $build -R unpack_datasets" >&2; exit 1; }
+done
 
 # Closed CGAL meshes with a shape (500-20,000 vertices, one component), and
 # one pose per TOSCA class.
