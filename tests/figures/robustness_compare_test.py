@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """robustness_report.py --compare on tables whose figures are known: two work
-folders of made-up sampling and pose rows (the second a probe, with its
-options), the printed table checked cell by cell (the fast-marching rows
+folders of made-up sampling and pose rows (probes, the first without
+options, the second with), the printed table checked cell by cell (the fast-marching rows
 only, failed variants left out).
 
 usage: robustness_compare_test.py SOURCE_DIR
@@ -59,6 +59,7 @@ def main():
             {"mesh": "cat1", "class": "cat", "reference": "cat0", "method": "dijkstra", "forward": "0.0",
              "nodes": "9", "reference_nodes": "11"},
         ])
+        (a / "options").write_text("\n")  # a probe of today's defaults: named alone
         (b / "options").write_text("--option epsilon=0.2\n")
         write(b / "sampling_y.csv", SAMPLING, [sample("m1", "remesh", "1", "2", "1.0000", False)])
         write(b / "tosca_poses.csv", POSES, [

@@ -112,6 +112,11 @@ def three_or_more(rows):
     return [r for r in rows if int(r["features"]) > 2]
 
 
+def two_points(rows):
+    """The rows whose original has two feature points (the diameter ends alone)."""
+    return [r for r in rows if int(r["features"]) <= 2]
+
+
 def by_variant(rows):
     """The rows grouped by (perturbation, strength, geodesic method)."""
     groups = defaultdict(list)
@@ -228,7 +233,7 @@ def sampling_section(work, report, out):
     for kind, strength in [("decimate", 0.5), ("remesh", 1.0)]:
         for m in METHODS:
             rs = table[(kind, strength, m)]
-            two = [r for r in rs if int(r["features"]) <= 2]
+            two = two_points(rs)
             for name, part in [("2 points", two), ("3 or more", three_or_more(rs))]:
                 s = summarize(part)
                 same = mean(r["features"] == r["variant_features"] for r in part)
@@ -454,8 +459,9 @@ def compare(folders):
            "|---|---|---|---|---|"]
     for work in folders:
         groups = by_variant(sampling_rows(work))
-        options = work / "options"  # robustness_probe.sh's
-        cells = [work.name + (f" (`{options.read_text().strip()}`)" if options.exists() else "")]
+        options = work / "options"  # robustness_probe.sh's, empty for today's defaults
+        text = options.read_text().strip() if options.exists() else ""
+        cells = [work.name + (f" (`{text}`)" if text else "")]
         for kind, strength, detailed in (("decimate", 0.5, True), ("remesh", 1.0, True), ("noise", 0.0025, False)):
             rows = groups.get((kind, strength, "fmm"), [])
             if not rows:
@@ -465,7 +471,7 @@ def compare(folders):
             parts = [every["forward"]]
             if detailed:
                 parts += [summarize(three_or_more(rows))["forward"],
-                          summarize([r for r in rows if int(r["features"]) <= 2])["forward"]]
+                          summarize(two_points(rows))["forward"]]
             cells.append(" / ".join(pct(x) if x == x else "-" for x in parts + [every["nodes"]]) +
                          f" ({every['n']})")  # "-": no such mesh
         poses = [r for r in read(work / "tosca_poses.csv") if r["method"] == "fmm"]
