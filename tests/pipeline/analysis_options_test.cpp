@@ -24,6 +24,7 @@ AnalysisOptions changed() {
   o.features.protrusion_persistence = 0.05;
   o.features.site = FeatureSite::Extremum;
   o.features.rule = FeatureRule::Center;
+  o.features.average_sources = 5;
   o.features.tip_persistence = 0.06;
   o.features.start = DiameterStart::Vertex;
   o.reeb.level_lines = LevelLines::Paper;

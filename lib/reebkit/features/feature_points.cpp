@@ -24,10 +24,11 @@ constexpr NamedValues<DiameterStart, 2> kDiameterStartNames{"diameter start",
                                                             {{{DiameterStart::Vertex, "vertex"},
                                                               {DiameterStart::Centroid, "centroid"}}}};
 
-constexpr NamedValues<FeatureRule, 3> kFeatureRuleNames{"feature rule",
+constexpr NamedValues<FeatureRule, 4> kFeatureRuleNames{"feature rule",
                                                         {{{FeatureRule::Intersection, "intersection"},
                                                           {FeatureRule::Center, "center"},
-                                                          {FeatureRule::Confirmed, "confirmed"}}}};
+                                                          {FeatureRule::Confirmed, "confirmed"},
+                                                          {FeatureRule::Average, "average"}}}};
 
 constexpr NamedValues<FeatureSite, 3> kFeatureSiteNames{"feature site",
                                                         {{{FeatureSite::Extremum, "extremum"},
@@ -345,6 +346,61 @@ void center_feature_points(const MeshGraph& graph, const FeatureOptions& options
   }
 }
 
+// FeatureRule::Average: the ends, then the maxima of the mean of
+// options.average_sources geodesic functions (f1, f2 and those from the
+// farthest-point samples after the ends, each the vertex farthest from the
+// sources so far), the nearest source left out, persisting at least
+// tip_persistence x the diameter, the largest mean first (ties: the smaller
+// id), each at the centre of the tips of the mean around it (as
+// FeatureSite::Tips) where no feature point lies within `near`'s radius.
+void average_feature_points(const MeshGraph& graph, const FeatureOptions& options, const std::vector<double>& f1,
+                            const std::vector<double>& f2, const GeodesicOptions& near, GeodesicSolver& solver,
+                            FeaturePoints& out) {
+  std::vector<double> sum(out.f1.size()), to_sources(out.f1.size());
+  for (std::size_t v = 0; v < sum.size(); ++v) {
+    sum[v] = out.f1[v] + out.f2[v];
+    to_sources[v] = std::min(out.f1[v], out.f2[v]);
+  }
+  for (int k = 2; k < options.average_sources; ++k) {
+    const DistanceField& field = solver.run({grid_farthest(to_sources)});
+    for (std::size_t v = 0; v < sum.size(); ++v) {
+      sum[v] += field.distance[v];
+      to_sources[v] = std::min(to_sources[v], field.distance[v]);
+    }
+  }
+  // The nearest source left out: a tip that holds a source persists as
+  // much as one that does not.
+  for (std::size_t v = 0; v < sum.size(); ++v) sum[v] = (sum[v] - to_sources[v]) / (options.average_sources - 1);
+  std::vector<double> mean = snapped(std::move(sum), kTieGrid * out.diameter);
+  // The ends above every other vertex: a maximum persists until the mean
+  // reaches a higher one or an end, so that the global maximum of a round
+  // shape, where no protrusion stands out, is not a tip.
+  const double top = *std::max_element(mean.begin(), mean.end()) + 1.0;
+  mean[static_cast<std::size_t>(out.source1)] = mean[static_cast<std::size_t>(out.source2)] = top;
+  const auto maxima = [&](double persistence) {
+    std::vector<Index> m = persistent_extrema(graph, mean, std::round(persistence / kTieGrid));
+    m.erase(std::remove_if(m.begin(), m.end(),
+                           [&](Index v) {
+                             return v == out.source1 || v == out.source2 || !is_local_maximum(graph, mean, v);
+                           }),
+            m.end());
+    return m;
+  };
+  std::vector<Index> tips = maxima(options.tip_persistence);
+  const std::vector<Index> site_tips = maxima(kSiteTipPersistence);
+  std::sort(tips.begin(), tips.end(),
+            [&](Index a, Index b) { return std::make_pair(-at(mean, a), a) < std::make_pair(-at(mean, b), b); });
+  std::vector<double> to_features(out.f1.size(), std::numeric_limits<double>::infinity());
+  take_feature_point(out.source1, near, solver, out, to_features);
+  take_feature_point(out.source2, near, solver, out, to_features);
+  const double unit = kTieGrid * out.diameter;
+  for (const Index v : tips) {
+    if (at(to_features, v) <= near.radius) continue;
+    const Index site = tips_centre(solver, v, site_tips, kSiteTipRadius * near.radius, 1000.0 * unit, f1, f2);
+    if (!(at(to_features, site) <= near.radius)) take_feature_point(site, near, solver, out, to_features);
+  }
+}
+
 }  // namespace
 
 const char* feature_rule_name(FeatureRule rule) { return kFeatureRuleNames.name(rule); }
@@ -399,6 +455,9 @@ FeaturePoints extract_feature_points(const Mesh& mesh, const MeshGraph& graph, c
   if (!(options.tip_persistence >= 0.0 && options.tip_persistence <= 1.0))
     throw InvalidArgument("extract_feature_points: tip_persistence must lie in [0, 1], got " +
                           std::to_string(options.tip_persistence));
+  if (options.average_sources < 3)
+    throw InvalidArgument("extract_feature_points: average_sources must be at least 3, got " +
+                          std::to_string(options.average_sources));
   if (!(options.protrusion_persistence >= 0.0 && options.protrusion_persistence <= 1.0))
     throw InvalidArgument("extract_feature_points: protrusion_persistence must lie in [0, 1], got " +
                           std::to_string(options.protrusion_persistence));
@@ -485,6 +544,10 @@ FeaturePoints extract_feature_points(const Mesh& mesh, const MeshGraph& graph, c
   const double radius = options.epsilon * out.diameter, radius_units = std::round(options.epsilon / kTieGrid);
   GeodesicOptions near{radius};
   near.separate_sources = true;  // the extrema are points
+  if (options.rule == FeatureRule::Average) {
+    average_feature_points(graph, options, f1, f2, near, solver, out);
+    return out;
+  }
   if (options.rule == FeatureRule::Center) {
     center_feature_points(graph, options, f1, f2, near, solver, out);
     if (options.protrusion_persistence > 0.0) add_protrusion_tips(graph, options, f1, f2, solver, out);

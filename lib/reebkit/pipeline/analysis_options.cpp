@@ -86,10 +86,14 @@ const std::vector<AnalysisOptionField>& analysis_option_fields() {
             "the extrema of f1 and f2, the default) or center (the diameter ends and the maxima of the distance "
             "from the centre of the diameter persisting at least tip_persistence and within epsilon of an extremum "
             "of f1 or f2, epsilon apart) or confirmed (the points of eq. 6 that lie within epsilon of such a "
-            "maximum, and the diameter ends)",
+            "maximum, and the diameter ends) or average (the diameter ends and the maxima of the mean geodesic "
+            "distance from average_sources sources persisting at least tip_persistence, epsilon apart)",
             [](auto& o) -> auto& { return o.features.rule; }),
-      field("tip_persistence", "feature_rule center or confirmed: the persistence, as a fraction of the geodesic diameter, "
-            "from which a maximum of the distance from the centre is a tip",
+      field("average_sources", "feature_rule average: the geodesic functions averaged (from the diameter ends "
+            "and farthest-point samples after them)",
+            [](auto& o) -> auto& { return o.features.average_sources; }, OptionRange{3}),
+      field("tip_persistence", "feature_rule center, confirmed or average: the persistence, as a fraction of the "
+            "geodesic diameter, from which a maximum of the distance from the centre (of the mean) is a tip",
             [](auto& o) -> auto& { return o.features.tip_persistence; }, OptionRange{0, 1}),
       field("level_lines", "what a level line is: contour (the connected curves of the propagation front, exact "
             "topology) or paper (Definition 6: connected sets of candidate vertices)",
