@@ -116,10 +116,12 @@ Passes passes_of(const FeaturePoints& fp, const QuotientFunction& fq) {
 }
 
 void run_features(benchmark::State& state, const Case& c, Geodesic method = Geodesic::Dijkstra,
-                  double min_persistence = FeatureOptions{}.min_persistence) {
+                  double min_persistence = FeatureOptions{}.min_persistence,
+                  FeatureRule rule = FeatureRule::Intersection) {
   FeatureOptions options;
   options.geodesic = method;
   options.min_persistence = min_persistence;
+  options.rule = rule;
   std::size_t count = 0;
   Passes passes;
   for (auto _ : state) {
@@ -175,6 +177,13 @@ void BM_FeaturesAndQuotient_Star_FMM(benchmark::State& state) {
   run_features(state, star_case(static_cast<int>(state.range(0))), Geodesic::FastMarching);
 }
 BENCHMARK(BM_FeaturesAndQuotient_Star_FMM)->Arg(6)->Arg(7)->Unit(benchmark::kMillisecond);
+// The tips of the mean geodesic distance (FeatureRule::Average): its samples'
+// passes are not counted in full_passes.
+void BM_FeaturesAndQuotient_Star_FMM_Average(benchmark::State& state) {
+  run_features(state, star_case(static_cast<int>(state.range(0))), Geodesic::FastMarching,
+               FeatureOptions{}.min_persistence, FeatureRule::Average);
+}
+BENCHMARK(BM_FeaturesAndQuotient_Star_FMM_Average)->Arg(6)->Arg(7)->Unit(benchmark::kMillisecond);
 
 // A torus of 1M vertices (2M faces).
 void BM_FeaturesAndQuotient_Torus1M(benchmark::State& state) { run_features(state, torus_case(2000, 500)); }
@@ -244,6 +253,10 @@ void register_shrec() {
   })->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark(("BM_FeaturesAndQuotient_SHREC07_FMM/" + name).c_str(), [](benchmark::State& state) {
     run_features(state, shrec, Geodesic::FastMarching);
+  })->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark(("BM_FeaturesAndQuotient_SHREC07_FMM_Average/" + name).c_str(), [](benchmark::State&
+                                                                                                      state) {
+    run_features(state, shrec, Geodesic::FastMarching, FeatureOptions{}.min_persistence, FeatureRule::Average);
   })->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark(("BM_DijkstraFullPass_SHREC07/" + name).c_str(), [](benchmark::State& state) {
     run_full_passes<DijkstraSolver>(state, shrec);

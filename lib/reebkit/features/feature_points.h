@@ -77,6 +77,7 @@ enum class FeatureRule {
   /// The mean geodesic distance as a pose-invariant function with its maxima
   /// at the tips of protrusions: M. Hilaga et al., SIGGRAPH 2001; E. Zhang
   /// et al., ACM TOG 2005. average_sources - 2 full passes more than eq. (6).
+  /// FeatureOptions::site and protrusion_persistence do not apply.
   /// Not the default: the held-out animals keep their graphs under pose, and
   /// the points move a little more under resampling (docs/results.md, "The
   /// tips of the mean geodesic distance").
