@@ -297,6 +297,26 @@ void take_feature_point(Index v, const GeodesicOptions& near, GeodesicSolver& so
   }
 }
 
+// The local maxima of `f` (on the tie grid) persisting at least
+// `persistence` x the diameter, other than the ends out.source1 and
+// out.source2, by increasing id.
+std::vector<Index> persistent_maxima(const MeshGraph& graph, const std::vector<double>& f, double persistence,
+                                     const FeaturePoints& out) {
+  std::vector<Index> maxima = persistent_extrema(graph, f, std::round(persistence / kTieGrid));
+  maxima.erase(std::remove_if(maxima.begin(), maxima.end(),
+                              [&](Index v) {
+                                return v == out.source1 || v == out.source2 || !is_local_maximum(graph, f, v);
+                              }),
+               maxima.end());
+  return maxima;
+}
+
+// `tips` by decreasing f, ties to the smaller id.
+void sort_largest_first(std::vector<Index>& tips, const std::vector<double>& f) {
+  std::sort(tips.begin(), tips.end(),
+            [&](Index a, Index b) { return std::make_pair(-at(f, a), a) < std::make_pair(-at(f, b), b); });
+}
+
 // The tips seen from the centre of the diameter (the vertex of smallest
 // max(f1, f2) on the snapped f1 and f2, ties to the smaller id, stored in
 // out.center): the local maxima of f_c, the distance from it, persisting at
@@ -313,14 +333,8 @@ std::vector<Index> tips_from_center(const MeshGraph& graph, const FeatureOptions
     if (std::max(at(f1, v), at(f2, v)) < std::max(at(f1, center), at(f2, center))) center = v;
   out.center = center;
   const std::vector<double> fc = snapped(solver.run({center}).distance, kTieGrid * out.diameter);
-  std::vector<Index> tips = persistent_extrema(graph, fc, std::round(options.tip_persistence / kTieGrid));
-  tips.erase(std::remove_if(tips.begin(), tips.end(),
-                            [&](Index v) {
-                              return v == out.source1 || v == out.source2 || !is_local_maximum(graph, fc, v);
-                            }),
-             tips.end());
-  std::sort(tips.begin(), tips.end(),
-            [&](Index a, Index b) { return std::make_pair(-at(fc, a), a) < std::make_pair(-at(fc, b), b); });
+  std::vector<Index> tips = persistent_maxima(graph, fc, options.tip_persistence, out);
+  sort_largest_first(tips, fc);
   return tips;
 }
 
@@ -377,19 +391,9 @@ void average_feature_points(const MeshGraph& graph, const FeatureOptions& option
   // shape, where no protrusion stands out, is not a tip.
   const double top = *std::max_element(mean.begin(), mean.end()) + 1.0;
   mean[static_cast<std::size_t>(out.source1)] = mean[static_cast<std::size_t>(out.source2)] = top;
-  const auto maxima = [&](double persistence) {
-    std::vector<Index> m = persistent_extrema(graph, mean, std::round(persistence / kTieGrid));
-    m.erase(std::remove_if(m.begin(), m.end(),
-                           [&](Index v) {
-                             return v == out.source1 || v == out.source2 || !is_local_maximum(graph, mean, v);
-                           }),
-            m.end());
-    return m;
-  };
-  std::vector<Index> tips = maxima(options.tip_persistence);
-  const std::vector<Index> site_tips = maxima(kSiteTipPersistence);
-  std::sort(tips.begin(), tips.end(),
-            [&](Index a, Index b) { return std::make_pair(-at(mean, a), a) < std::make_pair(-at(mean, b), b); });
+  std::vector<Index> tips = persistent_maxima(graph, mean, options.tip_persistence, out);
+  sort_largest_first(tips, mean);
+  const std::vector<Index> site_tips = persistent_maxima(graph, mean, kSiteTipPersistence, out);  // by id
   std::vector<double> to_features(out.f1.size(), std::numeric_limits<double>::infinity());
   take_feature_point(out.source1, near, solver, out, to_features);
   take_feature_point(out.source2, near, solver, out, to_features);
