@@ -102,17 +102,19 @@ BENCHMARK(BM_FastMarchingSetup)->Args({500, 200})->Unit(benchmark::kMillisecond)
 
 // The geodesic passes of the feature step and f_q. Full: single-source
 // passes over the whole mesh, the diameter ends' sweeps (Dijkstra's search,
-// then f1, f2 and the extra sweeps and seeds), and f_q's pass where it covers
-// every vertex (no diameter end among the feature points). Equivalents: the
-// sweeps plus the share of the vertices f_q's pass settled (the other
-// feature points' Voronoi cells, quotient_function.h). The epsilon balls,
-// restricted to epsilon x diameter, count in neither.
+// then f1, f2 and the extra sweeps and seeds), the average rule's samples,
+// and f_q's pass where it covers every vertex (no diameter end among the
+// feature points). Equivalents: those passes plus the share of the vertices
+// f_q's pass settled (the other feature points' Voronoi cells,
+// quotient_function.h). The epsilon balls, restricted to epsilon x diameter,
+// count in neither.
 struct Passes {
   int full = 0;
   double equivalents = 0.0;
 };
 Passes passes_of(const FeaturePoints& fp, const QuotientFunction& fq) {
-  return {fp.sweeps + (fq.pass_share >= 1.0 ? 1 : 0), fp.sweeps + fq.pass_share};
+  const int full = fp.sweeps + fp.sample_passes;
+  return {full + (fq.pass_share >= 1.0 ? 1 : 0), full + fq.pass_share};
 }
 
 void run_features(benchmark::State& state, const Case& c, Geodesic method = Geodesic::Dijkstra,
@@ -177,8 +179,7 @@ void BM_FeaturesAndQuotient_Star_FMM(benchmark::State& state) {
   run_features(state, star_case(static_cast<int>(state.range(0))), Geodesic::FastMarching);
 }
 BENCHMARK(BM_FeaturesAndQuotient_Star_FMM)->Arg(6)->Arg(7)->Unit(benchmark::kMillisecond);
-// The tips of the mean geodesic distance (FeatureRule::Average): its samples'
-// passes are not counted in full_passes.
+// The tips of the mean geodesic distance (FeatureRule::Average).
 void BM_FeaturesAndQuotient_Star_FMM_Average(benchmark::State& state) {
   run_features(state, star_case(static_cast<int>(state.range(0))), Geodesic::FastMarching,
                FeatureOptions{}.min_persistence, FeatureRule::Average);
@@ -264,18 +265,21 @@ void register_shrec() {
   benchmark::RegisterBenchmark(("BM_FastMarchingFullPass_SHREC07/" + name).c_str(), [](benchmark::State& state) {
     run_full_passes<FastMarchingSolver>(state, shrec);
   })->Unit(benchmark::kMillisecond);
-  // Default options, and the search held to four passes (FeatureOptions::max_search_passes).
-  for (const int budget : {0, 4}) {
-    FeatureOptions options;
-    options.max_search_passes = budget;
-    const std::string suffix = budget > 0 ? "/max_search_passes:" + std::to_string(budget) : "";
+  // Default options, the search held to four passes (FeatureOptions::max_search_passes)
+  // and the average rule.
+  FeatureOptions budget, average;
+  budget.max_search_passes = 4;
+  average.rule = FeatureRule::Average;
+  const std::pair<std::string, FeatureOptions> variants[] = {{"", FeatureOptions{}},
+                                                             {"/max_search_passes:4", budget},
+                                                             {"/feature_rule:average", average}};
+  for (const auto& [suffix, options] : variants)
     benchmark::RegisterBenchmark(("BM_FullPasses_SHREC07All" + suffix).c_str(),
-                                 [unpacked, options](benchmark::State& state) {
+                                 [unpacked, options = options](benchmark::State& state) {
                                    count_full_passes(state, unpacked, options);
                                  })
         ->Unit(benchmark::kMillisecond)
         ->Iterations(1);
-  }
 }
 
 }  // namespace

@@ -694,6 +694,31 @@ TEST(FeaturePoints, TheAverageRuleFindsOnePointPerArmTip) {
     }
 }
 
+// The first farthest-point sample after the ends is the diameter search's
+// seed where that seed found no longer diameter: its pass is taken from the
+// search (no sample pass with 3 sources, one with 4), and the points are
+// those of a search without the seed, which runs the sample's pass itself.
+TEST(FeaturePoints, TheAverageRuleTakesItsFirstSampleFromTheSearch) {
+  for (const Mesh& mesh : {make_star(star(5)), make_star(star(8)), make_torus(48, 16)}) {
+    const MeshGraph g = build_mesh_graph(mesh);
+    FeatureOptions average;
+    average.rule = FeatureRule::Average;
+    FeatureOptions unseeded = average;
+    unseeded.extra_seeds = 0;
+    for (const int sources : {3, 4}) {
+      SCOPED_TRACE(std::to_string(mesh.num_vertices()) + " vertices, " + std::to_string(sources) + " sources");
+      average.average_sources = unseeded.average_sources = sources;
+      const FeaturePoints seeded = extract_feature_points(mesh, g, average);
+      const FeaturePoints alone = extract_feature_points(mesh, g, unseeded);
+      ASSERT_EQ(std::minmax(seeded.source1, seeded.source2), std::minmax(alone.source1, alone.source2));
+      EXPECT_EQ(seeded.sweeps, alone.sweeps + 1);
+      EXPECT_EQ(seeded.sample_passes, sources - 3);
+      EXPECT_EQ(alone.sample_passes, sources - 2);
+      EXPECT_EQ(seeded.vertices, alone.vertices);
+    }
+  }
+}
+
 // A tip is a maximum of the mean persisting at least tip_persistence x the
 // diameter before the mean reaches a higher maximum or a diameter end: above
 // an arm's length only the ends are left, and a round shape, whose mean has

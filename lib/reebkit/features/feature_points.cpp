@@ -48,6 +48,12 @@ struct DiameterEnds {
   }
 };
 
+// A full pass's distances from one source, kept for a later step.
+struct SourceField {
+  Index source = kInvalidIndex;
+  std::vector<double> distance;
+};
+
 // to_ends[v] <- the distance from v to the nearest end found so far, with
 // the ends of `e` (f2 absent when only its length was kept): the field whose
 // maximum is the next farthest-point seed.
@@ -367,19 +373,27 @@ void center_feature_points(const MeshGraph& graph, const FeatureOptions& options
 // tip_persistence x the diameter, the largest mean first (ties: the smaller
 // id), each at the centre of the tips of the mean around it (as
 // FeatureSite::Tips) where no feature point lies within `near`'s radius.
+// `searched`: the full passes the diameter search ran and did not keep (its
+// farthest-point seeds), by source: the first sample after the ends is the
+// search's first seed wherever that seed found no longer diameter, and its
+// field is taken from there instead of run again.
 void average_feature_points(const MeshGraph& graph, const FeatureOptions& options, const std::vector<double>& f1,
                             const std::vector<double>& f2, const GeodesicOptions& near, GeodesicSolver& solver,
-                            FeaturePoints& out) {
+                            const std::vector<SourceField>& searched, FeaturePoints& out) {
   std::vector<double> sum(out.f1.size()), to_sources(out.f1.size());
   for (std::size_t v = 0; v < sum.size(); ++v) {
     sum[v] = out.f1[v] + out.f2[v];
     to_sources[v] = std::min(out.f1[v], out.f2[v]);
   }
   for (int k = 2; k < options.average_sources; ++k) {
-    const DistanceField& field = solver.run({grid_farthest(to_sources)});
+    const Index sample = grid_farthest(to_sources);
+    const auto found =
+        std::find_if(searched.begin(), searched.end(), [&](const SourceField& f) { return f.source == sample; });
+    if (found == searched.end()) ++out.sample_passes;
+    const std::vector<double>& distance = found != searched.end() ? found->distance : solver.run({sample}).distance;
     for (std::size_t v = 0; v < sum.size(); ++v) {
-      sum[v] += field.distance[v];
-      to_sources[v] = std::min(to_sources[v], field.distance[v]);
+      sum[v] += distance[v];
+      to_sources[v] = std::min(to_sources[v], distance[v]);
     }
   }
   // The nearest source left out: a tip that holds a source persists as
@@ -472,6 +486,7 @@ FeaturePoints extract_feature_points(const Mesh& mesh, const MeshGraph& graph, c
   FeaturePoints out;
   out.geodesic = options.geodesic;
   DiameterEnds ends;
+  std::vector<SourceField> searched;  // the seeds' passes, for FeatureRule::Average
   if (options.start == DiameterStart::Vertex && options.geodesic == Geodesic::Dijkstra) {
     ends = search_diameter_ends(solver, options, options.max_extra_sweeps, true);
   } else {
@@ -510,7 +525,10 @@ FeaturePoints extract_feature_points(const Mesh& mesh, const MeshGraph& graph, c
       // Longer by more than the grid: a similar copy, whose lengths differ
       // by rounding only, makes the same choice.
       const double unit = kTieGrid * ends.length();
-      if (!(std::round(other.length() / unit) > std::round(ends.length() / unit))) continue;
+      if (!(std::round(other.length() / unit) > std::round(ends.length() / unit))) {
+        if (options.rule == FeatureRule::Average) searched.push_back({seed, std::move(other.f1)});
+        continue;
+      }
       // The sweep from the seed goes on from its first pass, already run.
       passes += complete_sweep(solver, other, extras_within(1), true);
       ends = std::move(other);
@@ -549,7 +567,7 @@ FeaturePoints extract_feature_points(const Mesh& mesh, const MeshGraph& graph, c
   GeodesicOptions near{radius};
   near.separate_sources = true;  // the extrema are points
   if (options.rule == FeatureRule::Average) {
-    average_feature_points(graph, options, f1, f2, near, solver, out);
+    average_feature_points(graph, options, f1, f2, near, solver, searched, out);
     return out;
   }
   if (options.rule == FeatureRule::Center) {

@@ -234,6 +234,9 @@ struct FeaturePoints {
   /// of f_c; kInvalidIndex under eq. (6).
   Index center = kInvalidIndex;
   int sweeps = 0;  ///< full geodesic passes spent finding v_s1, v_s2, f1 and f2
+  /// FeatureRule::Average: full passes from the farthest-point samples (a
+  /// sample where the search already ran a pass, its seed, costs none).
+  int sample_passes = 0;
   /// The method of f1, f2 and the epsilon balls (FeatureOptions::geodesic).
   Geodesic geodesic = Geodesic::FastMarching;
   /// f1 and f2 themselves (#V each, distances from source1 and from
