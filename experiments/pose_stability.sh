@@ -26,7 +26,8 @@
 # models.cla; each run indexes them with the analysis options given (reeb
 # index's, e.g. --epsilon 0.18) into BUILD_DIR/pose_stability/NAME.h5
 # (default NAME: default) and prints `reeb info`'s stability per model
-# class to NAME.txt, its last line to the terminal. THREADS (default 2).
+# class to NAME.txt, then the share per SHREC07 class; the terminal gets the
+# total and that line. THREADS (default 2).
 set -euo pipefail
 # shellcheck source=experiments/common.sh
 source "$(dirname "$0")/common.sh"
@@ -78,4 +79,13 @@ fi
 
 "$reeb" index "$work/meshes" -o "$work/$name.h5" --classes "$work/models.cla" --threads "$threads" "$@" > /dev/null
 "$reeb" info "$work/$name.h5" > "$work/$name.txt"
+# The same share per SHREC07 class, from reeb info's line per model
+# ("  m<id>  <graphs>  <kept> with ..."), added to NAME.txt.
+per_class=$(for class in $articulated; do
+  printf '%s %s\n' "$class" "$(shrec07_models "$class" | tr '\n' ' ')"
+done | awk -v info="$work/$name.txt" '
+  BEGIN { while ((getline line < info) > 0) if (split(line, f, /[ \t]+/) >= 4 && f[2] ~ /^m[0-9]+$/) { graphs[substr(f[2], 2)] = f[3]; kept[substr(f[2], 2)] = f[4] } }
+  { g = 0; k = 0; for (i = 2; i <= NF; ++i) { g += graphs[$i]; k += kept[$i] } out = out sep $1 " " k " / " g; sep = ", " }
+  END { print "per class: " out }')
 tail -n 1 "$work/$name.txt"
+echo "$per_class" | tee -a "$work/$name.txt"
