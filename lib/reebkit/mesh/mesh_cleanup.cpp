@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <numeric>
 #include <sstream>
@@ -44,13 +45,20 @@ void check_soup(const PolygonSoup& soup) {
   if (soup.num_polygons() == 0)
     throw InvalidMeshError(soup.source, "no faces: the file holds " + count_of(num_vertices, "vertex", "vertices") +
                                             " and no polygons (a point cloud?)");
-  for (Index v = 0; v < num_vertices; ++v) {
-    if (soup.vertices.row(v).allFinite()) continue;
-    std::ostringstream problem;
-    problem << "vertex " << v << " has a non-finite coordinate (" << soup.vertices(v, 0) << ", " << soup.vertices(v, 1)
-            << ", " << soup.vertices(v, 2) << ")";
-    throw InvalidMeshError(soup.source, problem.str());
-  }
+  // Each check one flat pass, then the search for what failed, where one did.
+  bool finite = true;
+  for (Eigen::Index i = 0; i < soup.vertices.size(); ++i) finite &= std::isfinite(soup.vertices.data()[i]);
+  if (!finite)
+    for (Index v = 0; v < num_vertices; ++v) {
+      if (soup.vertices.row(v).allFinite()) continue;
+      std::ostringstream problem;
+      problem << "vertex " << v << " has a non-finite coordinate (" << soup.vertices(v, 0) << ", "
+              << soup.vertices(v, 1) << ", " << soup.vertices(v, 2) << ")";
+      throw InvalidMeshError(soup.source, problem.str());
+    }
+  bool in_range = true;
+  for (const Index v : soup.face_vertex) in_range &= v >= 0 && v < num_vertices;
+  if (in_range) return;
   for (Index p = 0; p < soup.num_polygons(); ++p) {
     for (Index i = soup.face_offset[p]; i < soup.face_offset[p + 1]; ++i) {
       const Index v = soup.face_vertex[i];
@@ -279,7 +287,10 @@ Index drop_duplicate_triangles(Triangles& triangles, Index num_vertices) {
 /// soup's own array, where the caller gave the soup away, or copied.
 Mesh compact_mesh(const PolygonSoup& soup, Points* owned_vertices, Triangles triangles) {
   std::vector<Index> new_index(static_cast<std::size_t>(soup.num_vertices()), kInvalidIndex);
-  for (const Index v : triangles.reshaped()) new_index[v] = 0;
+  // Over the row-major array itself (Eigen's reshaped() walks it column by
+  // column, a division per entry).
+  const auto corners = static_cast<std::size_t>(triangles.size());
+  for (std::size_t c = 0; c < corners; ++c) new_index[static_cast<std::size_t>(triangles.data()[c])] = 0;
   Mesh mesh;
   mesh.source = soup.source;
   mesh.source_vertex.reserve(new_index.size());
@@ -295,7 +306,8 @@ Mesh compact_mesh(const PolygonSoup& soup, Points* owned_vertices, Triangles tri
   }
   mesh.vertices.resize(static_cast<Eigen::Index>(mesh.source_vertex.size()), 3);
   for (Index v = 0; v < mesh.num_vertices(); ++v) mesh.vertices.row(v) = soup.vertices.row(mesh.source_vertex[v]);
-  for (Index& v : mesh.triangles.reshaped()) v = new_index[v];
+  for (std::size_t c = 0; c < corners; ++c)
+    mesh.triangles.data()[c] = new_index[static_cast<std::size_t>(mesh.triangles.data()[c])];
   return mesh;
 }
 
