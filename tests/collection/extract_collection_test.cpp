@@ -18,6 +18,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -260,6 +261,45 @@ TEST(ExtractCollection, KilledAtRandomMomentsThenResumedGivesTheUninterruptedFil
   }
   ::unsetenv(kShared);
   ::unsetenv(kDelay);
+}
+
+// A stop request (reeb index's Ctrl-C): the meshes started are finished and
+// written, none after them; the new collection stays OUTPUT.partial, durable,
+// and --resume completes it into the file of an uninterrupted run.
+TEST(ExtractCollection, AStopRequestKeepsEveryEntryComputedAndResumeCompletesTheFile) {
+  const TempDir dir;
+  const std::vector<MeshInput> inputs = write_collection(dir);
+  std::atomic<bool> stop{false};
+  ExtractionOptions options = with_threads(2);
+  options.stop = &stop;
+  options.checkpoint_seconds = 1e9;  // no checkpoint before the stop: what is kept is the stop's doing
+  options.checkpoint_entries = 1000;
+  options.progress = [&stop](const ProgressState& s) {
+    if (s.done() == 3) stop = true;
+  };
+  const ExtractionSummary summary = extract_collection(inputs, {}, dir / "c.h5", options);
+  EXPECT_TRUE(summary.interrupted);
+  // Started before the request: the three written and at most batch_size (2) ahead of the writer.
+  EXPECT_GE(summary.computed(), 3);
+  EXPECT_LE(summary.computed(), 5);
+  EXPECT_EQ(summary.file, dir / "c.h5.partial");
+  EXPECT_FALSE(std::filesystem::exists(dir / "c.h5"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "c.h5.lock"));
+  const CollectionReader partial(dir / "c.h5.partial");
+  ASSERT_EQ(partial.size(), summary.computed());
+  for (std::int64_t i = 0; i < partial.size(); ++i)
+    EXPECT_EQ(partial.names()[static_cast<std::size_t>(i)], inputs[static_cast<std::size_t>(i)].name);
+
+  ExtractionOptions resume = with_threads(2);
+  resume.resume = true;
+  const ExtractionSummary resumed = extract_collection(inputs, {}, dir / "c.h5", resume);
+  EXPECT_FALSE(resumed.interrupted);
+  EXPECT_EQ(resumed.skipped, summary.computed());
+  EXPECT_EQ(resumed.computed(), static_cast<std::int64_t>(inputs.size()) - summary.computed());
+  EXPECT_EQ(resumed.file, dir / "c.h5");
+  EXPECT_FALSE(std::filesystem::exists(dir / "c.h5.partial"));
+  extract_collection(inputs, {}, dir / "whole.h5", with_threads(2));
+  expect_same_files(dir / "c.h5", dir / "whole.h5");
 }
 
 TEST(ExtractCollection, ReindexingRecomputesOnlyChangedFilesAndKeepsNamesUnique) {

@@ -10,6 +10,9 @@
 
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -147,6 +150,60 @@ TEST(ReebIndexCli, ASecondWriterIsRefusedNamingTheFirstOnesPidAndReadersStillWor
   EXPECT_EQ(info, 0) << info_out;
   EXPECT_TRUE(contains(info_out, {"60 meshes: 60 ok"})) << info_out << read_file_bytes(dir / "first.log");
   EXPECT_FALSE(std::filesystem::exists(dir / "c.h5.lock"));
+}
+
+// Ctrl-C: reeb index finishes and writes the meshes it started, says which
+// file holds them and exits 130; that file opens, and --resume completes it.
+// Before: SIGINT's default action killed the process, and every mesh since
+// the last checkpoint (up to --checkpoint-seconds of work) was lost.
+TEST(ReebIndexCli, CtrlCWritesTheMeshesStartedSaysWhereAndResumeCompletes) {
+  const TempDir dir;
+  const std::filesystem::path many = dir / "many";
+  std::filesystem::create_directories(many);
+  constexpr int kMeshes = 40;
+  for (int k = 0; k < kMeshes; ++k)
+    std::filesystem::copy_file(embedded_dataset_dir() / "cow.off", many / ("cow" + std::to_string(k) + ".off"));
+  const auto c = dir / "c.h5";
+  const std::string log = (dir / "index.log").string();
+  const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  ASSERT_GE(fd, 0);
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {  // only async-signal-safe calls until exec: this process may have had threads
+    ::dup2(fd, STDOUT_FILENO);
+    ::dup2(fd, STDERR_FILENO);
+    ::execl(kReeb.c_str(), kReeb.c_str(), "index", many.c_str(), "-o", c.c_str(), "--threads", "2",
+            static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  ::close(fd);
+  // The first progress line comes after the first mesh is written.
+  for (int wait = 0; wait < 6000 && read_file_bytes(log).find("indexed ") == std::string::npos; ++wait)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  ::kill(child, SIGINT);
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  const std::string out = read_file_bytes(log);
+  ASSERT_TRUE(WIFEXITED(status)) << out;
+  EXPECT_EQ(WEXITSTATUS(status), 130) << out;
+  const auto partial = dir / "c.h5.partial";
+  const std::int64_t entries = CollectionReader(partial).size();
+  EXPECT_GE(entries, 1);
+  EXPECT_LT(entries, kMeshes) << out;
+  EXPECT_TRUE(contains(out, {"stopping: the meshes in progress are finished and written",
+                             "interrupted: " + partial.string() + " holds " + std::to_string(entries) + " entries",
+                             "--resume computes the " + std::to_string(kMeshes - entries) + " meshes not started"}))
+      << out;
+  EXPECT_FALSE(std::filesystem::exists(c));
+  EXPECT_FALSE(std::filesystem::exists(dir / "c.h5.lock"));
+
+  const auto [resumed, resume_out] = reeb("index " + q(many) + " -o " + q(c) + " --threads 2 --resume");
+  EXPECT_EQ(resumed, 0) << resume_out;
+  EXPECT_TRUE(contains(resume_out, {std::to_string(kMeshes - entries) + " ok, 0 failed, " + std::to_string(entries) +
+                                    " already indexed"}))
+      << resume_out;
+  EXPECT_EQ(CollectionReader(c).size(), kMeshes);
+  EXPECT_FALSE(std::filesystem::exists(partial));
 }
 
 TEST(ReebIndexCli, BadOutputsOptionsAndClassesAreRefusedBeforeAnyWork) {

@@ -5,12 +5,51 @@
 #include "reebkit/collection/extract_collection.h"
 #include "reebkit/retrieval/query.h"
 
+#include <time.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <csignal>
+#include <cstdint>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <optional>
 
 namespace reebkit::cli {
+
+namespace {
+
+// Ctrl-C (SIGINT) or SIGTERM: the run stops starting meshes, writes the ones
+// in progress and ends durable (ExtractionOptions::stop). A second signal a
+// second or more later ends the process at once, as without the handler (the
+// file then holds the entries of its last checkpoint); one sooner is the
+// same request delivered twice (timeout(1) signals the process and then its
+// group). Either way --resume completes the file.
+static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<std::int64_t>::is_always_lock_free,
+              "set from a signal handler");
+std::atomic<bool> stop_requested{false};
+std::atomic<std::int64_t> first_request_ns{0};
+
+std::int64_t monotonic_ns() {  // clock_gettime is async-signal-safe
+  timespec now{};
+  ::clock_gettime(CLOCK_MONOTONIC, &now);
+  return static_cast<std::int64_t>(now.tv_sec) * 1000000000 + now.tv_nsec;
+}
+
+extern "C" void request_stop(int signal) {
+  if (!stop_requested.exchange(true)) {
+    first_request_ns.store(monotonic_ns());
+    constexpr char kMessage[] =
+        "\nreeb index: stopping: the meshes in progress are finished and written (again to stop at once)\n";
+    [[maybe_unused]] const ssize_t ignored = ::write(STDERR_FILENO, kMessage, sizeof kMessage - 1);
+  } else if (monotonic_ns() - first_request_ns.load() >= 1000000000) {
+    std::signal(signal, SIG_DFL);
+    std::raise(signal);
+  }
+}
+
+}  // namespace
 
 int run_index(const std::vector<std::string>& args) {
   po::options_description options("options");
@@ -68,7 +107,12 @@ int run_index(const std::vector<std::string>& args) {
     extraction.progress = [&bar](const ProgressState& state) { bar(state); };
     check_extraction(meshes, classes, output, extraction);  // a refusal before the announcement
     std::cerr << "indexing " << meshes.size() << " meshes into " << output << "\n";
+    extraction.stop = &stop_requested;
+    std::signal(SIGINT, request_stop);
+    std::signal(SIGTERM, request_stop);
     result = extract_collection(meshes, classes, output, extraction);
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
   }
   const ExtractionSummary& summary = *result;
   const auto failed = static_cast<std::int64_t>(summary.failed.size());
@@ -84,6 +128,13 @@ int run_index(const std::vector<std::string>& args) {
             << summary.write_seconds << " s ("
             << (summary.seconds > 0 ? 100 * summary.write_seconds / summary.seconds : 0.0) << " % of the time)\n"
             << std::defaultfloat;
+  if (summary.interrupted) {
+    std::cerr << "reeb index: interrupted: " << summary.file.string() << " holds " << summary.kept + summary.computed()
+              << " entries; the same command with --resume computes the "
+              << static_cast<std::int64_t>(meshes.size()) - summary.skipped - summary.computed()
+              << " meshes not started\n";
+    return 130;  // 128 + SIGINT, as a shell reports a run stopped by Ctrl-C
+  }
   if (summary.all_failed) {
     std::cerr << "reeb index: error: every mesh failed (" << failed << "): " << output
               << (std::filesystem::exists(output) ? " left as it was" : " not written") << "\n";

@@ -366,11 +366,11 @@ ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const
   progress.skipped = summary.skipped;
 
   EntrySink sink(*writer, options, summary, progress, clock);
+  std::size_t next = 0;  // todo[next] is the next input to start
   try {
-    std::size_t next = 0;
     compute_in_order(
         [&]() -> std::optional<std::size_t> {
-          if (next == todo.size()) return std::nullopt;
+          if (next == todo.size() || (options.stop != nullptr && options.stop->load())) return std::nullopt;
           return todo[next++];
         },
         threads, static_cast<std::size_t>(options.batch_size),
@@ -394,6 +394,12 @@ ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const
                 " holds the entries of the last checkpoint: reeb index --resume goes on from there");
   }
   if (rewrite || relabel) std::filesystem::rename(rewritten, target);
+  summary.file = target;
+  summary.interrupted = next < todo.size();
+  if (summary.interrupted) {  // a new collection stays OUTPUT.partial: --resume completes it
+    summary.seconds = clock.elapsed() / 1000;
+    return summary;
+  }
   // A run in which every mesh failed leaves OUTPUT as it was (a collection
   // of failures only is no result, and a bad option must not replace one).
   summary.all_failed = summary.ok == 0 && !summary.failed.empty() && summary.kept == 0;
@@ -401,6 +407,7 @@ ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const
     std::filesystem::remove(target);
   else if (target != output)
     std::filesystem::rename(target, output);
+  summary.file = output;
   summary.seconds = clock.elapsed() / 1000;
   progress.seconds = summary.seconds;
   if (options.progress && todo.empty()) options.progress(progress);
@@ -434,6 +441,7 @@ ExtractionSummary extract_shard(const std::vector<MeshInput>& inputs, const std:
       },
       sink);
   sink.timed([&] { writer.close(); });
+  summary.file = shard;
   summary.seconds = clock.elapsed() / 1000;
   return summary;
 }

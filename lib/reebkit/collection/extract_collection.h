@@ -11,6 +11,7 @@
 #include "reebkit/pipeline/analyze_mesh.h"
 #include "reebkit/store/collection_file.h"
 
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -33,6 +34,12 @@ struct ExtractionOptions {
   ProgressSink progress;          ///< called after each entry written; empty = silent
   std::string command;            ///< the command line, stored as provenance
   std::string classes_file;       ///< the .cla file the classes come from, stored with them
+  /// Set to true to end the run early (it may be set from a signal handler:
+  /// std::atomic<bool> is lock-free): no further mesh is started, the ones
+  /// in progress are finished and written, the file is made durable, and
+  /// extract_collection returns with ExtractionSummary::interrupted.
+  /// Null: the run goes to the end. extract_shard does not look at it.
+  const std::atomic<bool>* stop = nullptr;
 };
 
 struct FailedMesh {
@@ -50,6 +57,13 @@ struct ExtractionSummary {
   /// Every mesh computed failed and the file kept none: the output was left
   /// as it was (not created, not replaced).
   bool all_failed = false;
+  /// ExtractionOptions::stop ended the run before every input was
+  /// computed: every entry computed is in `file`, which --resume completes.
+  bool interrupted = false;
+  /// The file that holds the entries: the output, or, for a new collection
+  /// whose run was interrupted, the output + ".partial" (not renamed over
+  /// the output until the collection is complete).
+  std::filesystem::path file;
   std::int64_t computed() const { return ok + static_cast<std::int64_t>(failed.size()); }
 };
 
@@ -102,6 +116,9 @@ bool opens_as_collection(const std::filesystem::path& path);
 /// keeps its old content, and an interrupted run leaves the partial file
 /// holding every entry up to its last checkpoint. When every mesh failed
 /// (summary.all_failed) the partial file is removed and `output` left as it was.
+///
+/// With options.stop set, the run ends early as ExtractionOptions::stop
+/// says; a new collection then stays in `output` + ".partial".
 ///
 /// With options.resume the entries of an existing `output` (or of the
 /// `output` + ".partial" an interrupted run left, which is then completed and
