@@ -210,7 +210,10 @@ void bind_collection(py::module_& m) {
             PairwiseDistances d;
             {
               const py::gil_scoped_release release;
-              d = all_pairs_distances(c.reader, rows, AllPairsOptions{threads, matching});
+              AllPairsOptions options;
+              options.threads = threads;
+              options.matching = matching;
+              d = all_pairs_distances(c.reader, rows, options);
             }
             const py::ssize_t n = d.size();
             return owning_array(std::move(d.values), {n, n});

@@ -51,5 +51,22 @@ TEST(Progress, TerminalRedrawsOneLineInPlace) {
   EXPECT_EQ(out.str(), "\r\033[K100 meshes: 97 ok, 3 failed, 0 already indexed, in 125.00 s (0.8 meshes/s)\n");
 }
 
+TEST(Progress, TheVerbAndUnitAreTheCommandsOwn) {
+  std::ostringstream out;
+  ProgressBar bar(out, false, 10.0, "matched", "pairs");
+  ProgressState s;
+  s.total = 79800;
+  s.ok = 39900;
+  s.seconds = 2.0;
+  bar(s);
+  EXPECT_EQ(out.str(), "matched 39900/79800  19950.0 pairs/s  ETA 2 s\n");
+  bar.clear();  // nothing drawn in place
+  EXPECT_EQ(out.str(), "matched 39900/79800  19950.0 pairs/s  ETA 2 s\n");
+  std::ostringstream terminal;
+  ProgressBar in_place(terminal, true, 10.0, "matched", "pairs");
+  in_place.clear();
+  EXPECT_EQ(terminal.str(), "\r\033[K");
+}
+
 }  // namespace
 }  // namespace reebkit::test

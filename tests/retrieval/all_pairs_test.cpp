@@ -11,6 +11,9 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <thread>
+#include <utility>
+#include <vector>
 
 namespace reebkit::test {
 namespace {
@@ -41,7 +44,38 @@ TEST(AllPairs, SymmetricZeroDiagonalEqualToMatchingAndSerialEqualsParallel) {
       }
     }
   }
-  EXPECT_THROW(all_pairs_distances(entries, AllPairsOptions{-1, {}}), InvalidArgument);
+  AllPairsOptions negative;
+  negative.threads = -1;
+  EXPECT_THROW(all_pairs_distances(entries, negative), InvalidArgument);
+}
+
+// reeb distances' progress: the counts the calling thread reports never go
+// down, end at the number of pairs, and the matrix is the one without it.
+TEST(AllPairs, ProgressComesFromTheCallingThreadAndEndsAtEveryPair) {
+  const std::vector<GraphRecord>& entries = generated_entries();
+  const auto n = static_cast<std::int64_t>(entries.size());
+  AllPairsOptions options;
+  options.threads = 2;
+  std::vector<std::pair<std::int64_t, std::int64_t>> calls;
+  bool other_thread = false;
+  const std::thread::id caller = std::this_thread::get_id();
+  options.progress = [&](std::int64_t matched, std::int64_t pairs) {
+    other_thread = other_thread || std::this_thread::get_id() != caller;
+    calls.emplace_back(matched, pairs);
+  };
+  const PairwiseDistances with = all_pairs_distances(entries, options);
+  EXPECT_FALSE(other_thread);
+  ASSERT_GE(calls.size(), 2u);
+  for (std::size_t k = 0; k < calls.size(); ++k) {
+    EXPECT_EQ(calls[k].second, n * (n - 1) / 2);
+    EXPECT_GT(calls[k].first, 0);
+    if (k > 0) {
+      EXPECT_GE(calls[k].first, calls[k - 1].first);
+    }
+  }
+  EXPECT_EQ(calls.back().first, n * (n - 1) / 2);
+  options.progress = nullptr;
+  EXPECT_EQ(with.values, all_pairs_distances(entries, options).values);
 }
 
 TEST(AllPairs, BalancedRowBlocksSplitThePairsEvenlyAndAssembleIntoTheSameMatrix) {

@@ -4,6 +4,7 @@
 // "Query and distances").
 #include "reeb/cli.h"
 #include "reeb/cluster.h"
+#include "reebkit/collection/progress.h"
 #include "reebkit/core/error.h"
 #include "reebkit/core/timer.h"
 #include "reebkit/evaluation/distance_matrix.h"
@@ -84,7 +85,16 @@ int run_distances(const std::vector<std::string>& args) {
     result = all_pairs_on_cluster(matrix_entries(collection, rows), all_pairs);
     if (!result) return 0;
   } else {
+    ProgressBar bar = ProgressBar::for_stderr("matched", "pairs");
+    all_pairs.progress = [&](std::int64_t matched, std::int64_t pairs) {
+      ProgressState state;
+      state.total = pairs;
+      state.ok = matched;
+      state.seconds = timer.elapsed() / 1000;
+      bar(state);
+    };
     result = all_pairs_distances(collection, rows, all_pairs);
+    bar.clear();
   }
   const PairwiseDistances& distances = *result;
   const double seconds = timer.lap() / 1000;

@@ -1,4 +1,4 @@
-// Progress of a long batch (reeb index): a bar with the count, the rate and
+// Progress of a long batch (reeb index, reeb distances): a bar with the count, the rate and
 // the time left, redrawn in place on a terminal, or plain lines now and then
 // when stderr goes to a file or a pipe, and a summary line at the end.
 #pragma once
@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <ostream>
+#include <string>
 
 namespace reebkit {
 
@@ -30,20 +31,25 @@ using ProgressSink = std::function<void(const ProgressState&)>;
 class ProgressBar {
  public:
   /// `terminal`: redraw one line in place (at most every 0.1 s); otherwise
-  /// print a line every `line_seconds` (and at the end).
-  ProgressBar(std::ostream& out, bool terminal, double line_seconds = 10.0);
+  /// print a line every `line_seconds` (and at the end). The lines say
+  /// "<verb> <done>/<total>  <rate> <unit>/s  ETA ...".
+  ProgressBar(std::ostream& out, bool terminal, double line_seconds = 10.0, std::string verb = "indexed",
+              std::string unit = "meshes");
   /// A bar for std::cerr, in place when stderr is a terminal (isatty).
-  static ProgressBar for_stderr();
+  static ProgressBar for_stderr(std::string verb = "indexed", std::string unit = "meshes");
 
   void operator()(const ProgressState& state);
   /// The final line: "<n> meshes: <ok> ok, <failed> failed, <skipped>
   /// already indexed, in <s> s (<rate> meshes/s)".
   void finish(const ProgressState& state);
+  /// Clears the line drawn in place (nothing to clear on plain lines).
+  void clear();
 
  private:
   std::ostream* out_;
   bool terminal_;
   double line_seconds_;
+  std::string verb_, unit_;
   double last_ = -1e300;  ///< state.seconds of the last drawing
 };
 

@@ -5,6 +5,7 @@
 
 #include <omp.h>
 
+#include <atomic>
 #include <cmath>
 #include <sstream>
 #include <unordered_map>
@@ -49,6 +50,8 @@ std::vector<double> upper_triangle_rows(const std::vector<GraphRecord>& entries,
   std::vector<double> out(static_cast<std::size_t>(pairs_before(last, n) - pairs_before(first, n)), 0.0);
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
   const std::vector<MatchableGraph> graphs = make_matchable_graphs(entries);  // once, not once per pair
+  const auto pairs = static_cast<std::int64_t>(out.size());
+  std::atomic<std::int64_t> matched{0};
   // Rows get shorter with i (only j > i): a dynamic schedule balances them.
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (std::int64_t i = first; i < last; ++i) {
@@ -60,7 +63,10 @@ std::vector<double> upper_triangle_rows(const std::vector<GraphRecord>& entries,
               ? match_graphs(graphs[static_cast<std::size_t>(i)], graphs[static_cast<std::size_t>(j)], options.matching)
                     .distance
               : kFailedEntryDistance;
+    const std::int64_t so_far = matched.fetch_add(n - 1 - i) + (n - 1 - i);
+    if (options.progress && omp_get_thread_num() == 0) options.progress(so_far, pairs);
   }
+  if (options.progress) options.progress(pairs, pairs);
   return out;
 }
 

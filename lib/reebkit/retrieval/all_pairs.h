@@ -10,6 +10,7 @@
 #include "reebkit/store/collection_file.h"
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -24,6 +25,10 @@ inline constexpr double kFailedEntryDistance = static_cast<double>(std::numeric_
 struct AllPairsOptions {
   int threads = 0;           ///< OpenMP threads; 0 = omp_get_max_threads()
   MatchingOptions matching;  ///< the cost model of match_graphs
+  /// Called with the pairs matched so far and the pairs to match, from the
+  /// calling thread only: after each row it matched, and once at the end.
+  /// Empty: silent.
+  std::function<void(std::int64_t matched, std::int64_t pairs)> progress;
 };
 
 struct PairwiseDistances {
