@@ -93,5 +93,6 @@ void bind_errors(py::module_& m);
 void bind_graph(py::module_& m);
 void bind_mesh(py::module_& m);
 void bind_collection(py::module_& m);
+void bind_index(py::module_& m);
 
 }  // namespace reebkit::python

@@ -77,4 +77,5 @@ PYBIND11_MODULE(reebkit, m) {
   rp::bind_graph(m);
   rp::bind_mesh(m);
   rp::bind_collection(m);
+  rp::bind_index(m);
 }

@@ -179,6 +179,66 @@ def test_collection_reads_back(collection, reeb):
         c[len(c)]
 
 
+def same_collections(a, b):
+    """Two collection files hold the same entries: names, statuses, signatures, graphs."""
+    a, b = reebkit.Collection(a), reebkit.Collection(b)
+    assert a.names == b.names and a.analysis_options == b.analysis_options
+    assert np.array_equal(a.signatures, b.signatures, equal_nan=True)
+    for ga, gb in zip(a.graphs(), b.graphs()):
+        assert ga.ok == gb.ok and ga.edges.tolist() == gb.edges.tolist()
+        assert np.array_equal(ga.node_attributes, gb.node_attributes)
+
+
+def test_index_equals_reeb_index(collection, tmp_path):
+    path = tmp_path / "py.h5"
+    summary = reebkit.index(DATASETS, path, threads=1)
+    files = sorted(p.name for p in DATASETS.glob("*.off"))
+    assert summary["file"] == str(path) and summary["ok"] == len(files)
+    assert summary["failed"] == [] and summary["skipped"] == 0 and summary["kept"] == 0
+    same_collections(path, collection)
+    assert (tmp_path / "py.query.h5").exists()  # as `reeb index` writes it
+    again = reebkit.index([DATASETS], path, resume=True)
+    assert again["ok"] == 0 and again["skipped"] == len(files)
+    with pytest.raises(ValueError, match="epsilon"):
+        reebkit.index(DATASETS, tmp_path / "bad.h5", epsilon=5)
+    (tmp_path / "broken").mkdir()
+    (tmp_path / "broken" / "bad.off").write_text("OFF\n3 1 0\n0 0 0\n1 0 0\n")
+    with pytest.raises(reebkit.Error, match="every mesh failed .1., the first: bad.off"):
+        reebkit.index(tmp_path / "broken", tmp_path / "none.h5")
+    assert not (tmp_path / "none.h5").exists()
+
+
+def test_index_stops_on_ctrl_c_keeps_every_entry_and_resume_completes(collection, tmp_path):
+    import os
+    import signal
+
+    states = []
+
+    def interrupt_after_two(state):
+        states.append(state)
+        if state["ok"] + state["failed"] == 2:
+            os.kill(os.getpid(), signal.SIGINT)  # as Ctrl-C
+
+    path = tmp_path / "c.h5"
+    with pytest.raises(KeyboardInterrupt, match="c.h5.partial holds"):
+        reebkit.index(DATASETS, path, threads=2, progress=interrupt_after_two)
+    assert states[0]["total"] == len(list(DATASETS.glob("*.off"))) and states[0]["seconds"] >= 0
+    assert not path.exists()
+    kept = len(reebkit.Collection(tmp_path / "c.h5.partial"))
+    assert 2 <= kept < states[0]["total"]
+    resumed = reebkit.index(DATASETS, path, threads=2, resume=True)
+    assert resumed["skipped"] == kept and resumed["ok"] == states[0]["total"] - kept
+    same_collections(path, collection)
+
+    # An exception of the callable stops the run the same way, and is raised as it is.
+    def fail(state):
+        raise ValueError("stop here")
+
+    with pytest.raises(ValueError, match="stop here"):
+        reebkit.index(DATASETS, tmp_path / "d.h5", progress=fail)
+    assert len(reebkit.Collection(tmp_path / "d.h5.partial")) >= 1
+
+
 def test_graph_stability_equals_reeb_info(reeb, tmp_path):
     """Per class, the graphs with the class's most common (feature points, nodes,
     cycles), as `reeb info` prints them: a copy of the elk has the elk's graph,
