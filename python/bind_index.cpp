@@ -9,8 +9,10 @@
 #include "reebkit/retrieval/query.h"
 
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include <atomic>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,11 +23,11 @@ namespace {
 
 /// A path (str or os.PathLike) or a list of them, as strings.
 std::vector<std::string> paths_argument(const py::object& inputs) {
-  const py::module_ os = py::module_::import("os");
   if (py::isinstance<py::str>(inputs) || py::hasattr(inputs, "__fspath__"))
-    return {os.attr("fspath")(inputs).cast<std::string>()};
+    return {inputs.cast<std::filesystem::path>().string()};
   std::vector<std::string> out;
-  for (const py::handle item : inputs) out.push_back(os.attr("fspath")(item).cast<std::string>());
+  for (const std::filesystem::path& path : inputs.cast<std::vector<std::filesystem::path>>())
+    out.push_back(path.string());
   return out;
 }
 
@@ -56,10 +58,10 @@ void bind_index(py::module_& m) {
       analysis_options_doc();
   m.def(
       "index",
-      [](const py::object& inputs, const py::object& output, const py::object& classes, int threads, bool resume,
-         const py::object& progress, const py::kwargs& kwargs) {
-        const py::module_ os = py::module_::import("os");
-        const std::string out_path = os.attr("fspath")(output).cast<std::string>();
+      [](const py::object& inputs, const std::filesystem::path& output,
+         const std::optional<std::filesystem::path>& classes, int threads, bool resume, const py::object& progress,
+         const py::kwargs& kwargs) {
+        const std::string out_path = output.string();
         const std::vector<MeshInput> meshes = list_mesh_inputs(paths_argument(inputs));
         ExtractionOptions options;
         options.threads = threads;
@@ -67,8 +69,8 @@ void bind_index(py::module_& m) {
         options.analysis = analysis_options(kwargs);
         options.command = "reebkit.index";
         std::vector<PsbClass> cla;
-        if (!classes.is_none()) {
-          options.classes_file = os.attr("fspath")(classes).cast<std::string>();
+        if (classes) {
+          options.classes_file = classes->string();
           cla = read_psb_classes(options.classes_file);
         }
         // The callable and Python's signal handlers run on the writer, which
@@ -98,7 +100,7 @@ void bind_index(py::module_& m) {
         if (raised) {
           if (summary.interrupted && raised->matches(PyExc_KeyboardInterrupt)) {
             const std::string message = "reebkit.index interrupted: " + summary.file.string() + " holds " +
-                                        std::to_string(summary.kept + summary.computed()) +
+                                        std::to_string(summary.entries()) +
                                         " entries; index(..., resume=True) computes the others";
             PyErr_SetString(PyExc_KeyboardInterrupt, message.c_str());
             throw py::error_already_set();

@@ -129,7 +129,7 @@ int run_index(const std::vector<std::string>& args) {
             << (summary.seconds > 0 ? 100 * summary.write_seconds / summary.seconds : 0.0) << " % of the time)\n"
             << std::defaultfloat;
   if (summary.interrupted) {
-    std::cerr << "reeb index: interrupted: " << summary.file.string() << " holds " << summary.kept + summary.computed()
+    std::cerr << "reeb index: interrupted: " << summary.file.string() << " holds " << summary.entries()
               << " entries; the same command with --resume computes the "
               << static_cast<std::int64_t>(meshes.size()) - summary.skipped - summary.computed()
               << " meshes not started\n";

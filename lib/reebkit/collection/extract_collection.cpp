@@ -394,9 +394,9 @@ ExtractionSummary extract_collection(const std::vector<MeshInput>& inputs, const
                 " holds the entries of the last checkpoint: reeb index --resume goes on from there");
   }
   if (rewrite || relabel) std::filesystem::rename(rewritten, target);
-  summary.file = target;
   summary.interrupted = next < todo.size();
   if (summary.interrupted) {  // a new collection stays OUTPUT.partial: --resume completes it
+    summary.file = target;
     summary.seconds = clock.elapsed() / 1000;
     return summary;
   }

@@ -65,6 +65,8 @@ struct ExtractionSummary {
   /// the output until the collection is complete).
   std::filesystem::path file;
   std::int64_t computed() const { return ok + static_cast<std::int64_t>(failed.size()); }
+  /// The entries of `file`: those kept and those computed.
+  std::int64_t entries() const { return kept + computed(); }
 };
 
 /// The analysis options as one-line JSON text, for the file's provenance:
