@@ -10,7 +10,8 @@ usage: robustness_report.py WORK REPORT
 --compare prints, as one Markdown table, the figures issue 22 aims at for
 each WORK folder that holds sections 2 and 3 (experiments/robustness.sh's,
 experiments/robustness_probe.sh's, named with the options of the probe):
-fast marching, the default method.
+fast marching, the default method; then each folder against the first,
+variant by variant, with bootstrap intervals of the differences.
 """
 import csv
 import platform
@@ -29,6 +30,13 @@ METHODS = ["dijkstra", "fmm"]
 # Earlier defaults that robustness.sh measures again beside today's (the
 # folder under the work directory, the two columns' names, what changed).
 EARLIER_DEFAULTS = [
+    ("layout15", "no bound (layout 15)", "4 passes (today)",
+     "the diameter search held to four full passes for its ends, f1 and f2 together (`--max-search-passes 4`, "
+     "layout 16), against no bound (layouts 11-15: up to 9 passes on SHREC07, 4.165 on average)",
+     "The bound makes the time of the search that of four passes on every mesh; which of several nearly tied "
+     "pairs of ends a round or symmetric shape keeps moves with the sweeps either way, and the variant-by-variant "
+     "differences below are within what another draw of the meshes could give (docs/results.md, \"A budget of "
+     "search passes\")"),
     ("layout14", "midpoint (layout 14)", "tips (today)",
      "the feature points other than the diameter ends at the centre of the tips around their pair "
      "(`--feature-site tips`, layout 15), against halfway between the pair's two extrema (`--feature-site "
@@ -272,6 +280,10 @@ def sampling_section(work, report, out):
         b = summarize([r for r in rows if r["method"] == "fmm"])
         out.append(f"| every perturbation | all | {pct(a['forward'])} | {pct(a['nodes'])} | {pct(b['forward'])} | "
                    f"{pct(b['nodes'])} |")
+        cells = paired_cells(work / folder, work, np.random.default_rng(0))
+        out.append("\nToday against the old, variant by variant, in points (variants gaining / losing; 95 % bootstrap "
+                   "interval over the variants; repeatability unless said): " +
+                   "; ".join(f"{name} {cell}" for (name, *_), cell in zip(PAIRED_FIGURES, cells)) + ".")
         out.append("")
 
 
@@ -316,7 +328,8 @@ def pose_section(work, report, out):
                        f"{mean(across):.3f} |")
     out.append("")
     lines = []
-    earlier = [(" with layout 14's feature points (halfway between their two extrema)",
+    earlier = [(" with layout 15's diameter search (no bound on its passes)", work / "layout15" / "tosca_poses.csv"),
+               (" with layout 14's feature points (halfway between their two extrema)",
                 work / "layout14" / "tosca_poses.csv"),
                (" with layout 10's diameter search (from vertex 0)", work / "layout10" / "tosca_poses.csv"),
                (" with layout 8's feature points (epsilon 0.05, persistence 0.01, on the extrema)",
@@ -479,6 +492,59 @@ def compare(folders):
                                                  mean(r["nodes"] == r["reference_nodes"] for r in poses),
                                                  mode_share(poses, "fmm"))))
         out.append("| " + " | ".join(cells) + " |")
+    if len(folders) > 1:
+        out += ["", paired_table(folders)]
+    return "\n".join(out)
+
+
+# The figures paired_table compares: (name, perturbation, strength, the per-variant value).
+PAIRED_FIGURES = [
+    ("50 % decimation", "decimate", 0.5, lambda r: float(r["forward"])),
+    ("1x remeshing", "remesh", 1.0, lambda r: float(r["forward"])),
+    ("noise 0.25 %", "noise", 0.0025, lambda r: float(r["forward"])),
+    ("same nodes, 1x remeshing", "remesh", 1.0, lambda r: float(r["nodes"] == r["variant_nodes"])),
+]
+
+
+def paired_difference(a, b, rng, draws=10000):
+    """Mean of b - a over the variants both hold (dicts variant -> value), the
+    variants where b is higher and lower, and a 95 % bootstrap interval of the
+    mean (the variants resampled)."""
+    keys = sorted(set(a) & set(b))
+    d = np.array([b[k] - a[k] for k in keys])
+    if not len(d):
+        return None
+    means = d[rng.integers(0, len(d), size=(draws, len(d)))].mean(axis=1)
+    return d.mean(), int((d > 0).sum()), int((d < 0).sum()), np.percentile(means, [2.5, 97.5])
+
+
+def paired_cells(base, other, rng):
+    """One cell per PAIRED_FIGURES: folder `other` against folder `base`,
+    variant by variant (fast marching), the difference in points, the
+    variants gaining and losing, and its 95 % interval when the variants are
+    resampled. A difference whose interval holds 0 is within what another
+    draw of meshes could give."""
+    def values(work, kind, strength, value):
+        return {(r["group"], r["mesh"]): value(r) for r in sampling_rows(work)
+                if r["kind"] == kind and float(r["strength"]) == strength and r["method"] == "fmm"}
+
+    cells = []
+    for _, kind, strength, value in PAIRED_FIGURES:
+        r = paired_difference(values(base, kind, strength, value), values(other, kind, strength, value), rng)
+        cells.append("-" if r is None else
+                     f"{100 * r[0]:+.1f} ({r[1]} / {r[2]}; {100 * r[3][0]:+.1f} to {100 * r[3][1]:+.1f})")
+    return cells
+
+
+def paired_table(folders):
+    """Each folder against the first (paired_cells), as a Markdown table."""
+    rng = np.random.default_rng(0)
+    out = [f"Against {folders[0].name}, variant by variant: difference in points (variants gaining / losing; 95 % "
+           "bootstrap interval)\n",
+           "| folder | " + " | ".join(name for name, *_ in PAIRED_FIGURES) + " |",
+           "|---|" + "---|" * len(PAIRED_FIGURES)]
+    for work in folders[1:]:
+        out.append("| " + " | ".join([work.name] + paired_cells(folders[0], work, rng)) + " |")
     return "\n".join(out)
 
 
@@ -507,7 +573,8 @@ def main():
                "halfway between the pair in layouts 10-14, on the extremum before: sections 2 and 3 compare them), "
                "the diameter search started at the vertex farthest from the area centroid "
                "(`--diameter-start centroid`; from vertex 0 before layout 11: sections 2 and 3 compare them), up to "
-               "3 extra sweeps, leaves only at the maxima of f_q (`--leaves maxima`: the pits of the propagation "
+               "3 extra sweeps, at most 4 full passes for the diameter ends, f1 and f2 together "
+               "(`--max-search-passes 4`; no bound before layout 16: sections 2 and 3 compare them), leaves only at the maxima of f_q (`--leaves maxima`: the pits of the propagation "
                "cancelled; docs/results.md, \"Leaves at the maxima of f_q\", compares it with `propagation`). "
                "Dijkstra (`dijkstra`), the paper's method and reebkit's default before layout 7, is measured beside "
                "it in sections 2, 3 and 6: old and new side by side.\n")
