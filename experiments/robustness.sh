@@ -52,6 +52,8 @@ step "3: TOSCA poses, the feature points of layout 8 (epsilon 0.05, persistence 
 sampling_and_poses "the diameter search of layout 10 (from vertex 0)" "$work/layout10" --option diameter_start=vertex
 sampling_and_poses "the feature points of layout 14 (halfway between their two extrema)" "$work/layout14" \
   --option feature_site=midpoint
+sampling_and_poses "the diameter search of layout 15 (no bound on its passes)" "$work/layout15" \
+  --option max_search_passes=0
 step "6: timing" env OMP_NUM_THREADS=1 "$robustness" timing "$work" "$data/tosca_dev/michael0.off" 2000 10000 40000 100000
 printf 'total\t%s\n' "$((SECONDS - start_all))" >> "$work/steps.tsv"
 step "report and plots" /usr/bin/python3 "$source_dir/tools/figures/robustness_report.py" "$work" "$report"

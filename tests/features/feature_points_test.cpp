@@ -154,11 +154,12 @@ TEST(FeaturePoints, SingleArmShapeHasTwoEnds) {
 // (the default): f1 from the vertex farthest from it, f2, and the seed's
 // own pass. From vertex 0 under fast marching: a Dijkstra pass from it for
 // v_s1 first. Dijkstra from vertex 0 without seeds: vertex 0's double
-// sweep, whose second and third passes are f1 and f2.
+// sweep, whose second and third passes are f1 and f2. No bound on the passes.
 TEST(FeaturePoints, TheSearchSpendsOnlyThePassesItReads) {
   const Mesh mesh = make_star(star(1));
   const MeshGraph g = build_mesh_graph(mesh);
   FeatureOptions options;
+  options.max_search_passes = 0;
   EXPECT_EQ(extract_feature_points(mesh, g, options).sweeps, 2 + 1);
   options.start = DiameterStart::Vertex;
   EXPECT_EQ(extract_feature_points(mesh, g, options).sweeps, 1 + 2 + 1);
@@ -171,12 +172,14 @@ TEST(FeaturePoints, TheSearchSpendsOnlyThePassesItReads) {
 // On the six-armed star vertex 0's sweep ends on two arms that are not the
 // farthest apart, and the farthest-point seed finds a longer pair: its sweep
 // goes on from the seed's own pass (its f1), so it costs one pass more, f2
-// (the seed is mutually farthest with its end): 1 + 2 + 1 + 1.
+// (the seed is mutually farthest with its end): 1 + 2 + 1 + 1, one more
+// than the default bound of four allows.
 TEST(FeaturePoints, ALongerSeedsSweepGoesOnFromItsOwnPass) {
   const Mesh mesh = make_star(star(6));
   const MeshGraph g = build_mesh_graph(mesh);
   FeatureOptions options;
   options.start = DiameterStart::Vertex;
+  options.max_search_passes = 0;
   const FeaturePoints with_seed = extract_feature_points(mesh, g, options);
   options.extra_seeds = 0;
   const FeaturePoints without = extract_feature_points(mesh, g, options);
@@ -197,6 +200,7 @@ TEST(FeaturePoints, TheSearchStaysWithinItsPassBudget) {
       FeatureOptions options;
       options.start = start;
       options.extra_seeds = 2;
+      options.max_search_passes = 0;
       const FeaturePoints unlimited = extract_feature_points(mesh, g, options);
       const int search = start == DiameterStart::Vertex ? 1 : 0;  // the Dijkstra pass from vertex 0
       for (int budget = search + 2; budget <= unlimited.sweeps + 1; ++budget) {

@@ -20,7 +20,7 @@ AnalysisOptions changed() {
   o.features.start_vertex = 7;
   o.features.max_extra_sweeps = 1;
   o.features.extra_seeds = 0;
-  o.features.max_search_passes = 4;
+  o.features.max_search_passes = 3;
   o.features.protrusion_persistence = 0.05;
   o.features.site = FeatureSite::Extremum;
   o.features.rule = FeatureRule::Center;
@@ -60,15 +60,18 @@ TEST(AnalysisOptions, NamedOptionsRoundTrip) {
   EXPECT_EQ(back.holes.max_loop_length, 0.5);
   EXPECT_EQ(back.reeb.level_lines, LevelLines::Paper);
   // Options a file lacks keep their defaults, but for level_lines, leaves,
-  // feature_site, diameter_start and region_spectra: a file that predates
-  // them was analysed with Definition 6, every termination of the
-  // propagation, the feature points on their extrema, the diameter search
-  // from vertex 0 and the regions' spectra.
+  // feature_site, diameter_start, region_spectra and max_search_passes: a
+  // file that predates them was analysed with Definition 6, every
+  // termination of the propagation, the feature points on their extrema, the
+  // diameter search from vertex 0, the regions' spectra and no bound on the
+  // search's passes.
   EXPECT_EQ(analysis_options_from({{"epsilon", 0.2}}).reeb.level_lines, LevelLines::Paper);
   EXPECT_EQ(analysis_options_from({{"epsilon", 0.2}}).reeb.leaves, Leaves::Propagation);
   EXPECT_EQ(analysis_options_from({{"epsilon", 0.2}}).features.site, FeatureSite::Extremum);
   EXPECT_EQ(analysis_options_from({{"epsilon", 0.2}}).features.start, DiameterStart::Vertex);
   EXPECT_TRUE(analysis_options_from({{"epsilon", 0.2}}).spectra.regions);
+  EXPECT_EQ(analysis_options_from({{"epsilon", 0.2}}).features.max_search_passes, 0);
+  EXPECT_EQ(analysis_options_from({}).features.max_search_passes, 4);
   EXPECT_FALSE(analysis_options_from({}).spectra.regions);
   EXPECT_EQ(analysis_options_from({}).reeb.level_lines, LevelLines::Contour);
   EXPECT_EQ(analysis_options_from({}).reeb.leaves, Leaves::Maxima);
@@ -79,7 +82,8 @@ TEST(AnalysisOptions, NamedOptionsRoundTrip) {
                                                          {"leaves", std::string("maxima")},
                                                          {"feature_site", std::string("tips")},
                                                          {"diameter_start", std::string("centroid")},
-                                                         {"region_spectra", std::int64_t{0}}});
+                                                         {"region_spectra", std::int64_t{0}},
+                                                         {"max_search_passes", std::int64_t{4}}});
   EXPECT_EQ(partial.features.epsilon, 0.2);
   const auto differences = analysis_option_differences(partial, AnalysisOptions{});
   ASSERT_EQ(differences.size(), 1u);

@@ -70,7 +70,8 @@ const std::vector<AnalysisOptionField>& analysis_option_fields() {
             [](auto& o) -> auto& { return o.features.max_extra_sweeps; }, OptionRange{0}),
       field("extra_seeds", "further diameter sweeps from farthest-point seeds",
             [](auto& o) -> auto& { return o.features.extra_seeds; }, OptionRange{0}),
-      field("max_search_passes", "full passes for the diameter ends, f1 and f2 together at most (0: no limit)",
+      field("max_search_passes", "full passes for the diameter ends, f1 and f2 together at most (0: no limit, layout 15 "
+            "and before)",
             [](auto& o) -> auto& { return o.features.max_search_passes; }, OptionRange{0}),
       field("protrusion_persistence",
             "also make a feature point of every extremum of f1 or f2 persisting at least this fraction of the "
@@ -122,7 +123,7 @@ AnalysisOptions analysis_options_from(const std::vector<NamedOption>& named) {
   // Files written before an option existed were analysed as it was then:
   // level_lines with Definition 6, leaves with every termination, the
   // feature points on their extrema, the diameter search from vertex 0, the
-  // regions' spectra computed.
+  // regions' spectra computed, no bound on the passes of the search.
   const auto lacks = [&named](const char* name) {
     return !named.empty() &&
            std::none_of(named.begin(), named.end(), [name](const NamedOption& option) { return option.name == name; });
@@ -132,6 +133,7 @@ AnalysisOptions analysis_options_from(const std::vector<NamedOption>& named) {
   if (lacks("feature_site")) options.features.site = FeatureSite::Extremum;
   if (lacks("diameter_start")) options.features.start = DiameterStart::Vertex;
   if (lacks("region_spectra")) options.spectra.regions = true;
+  if (lacks("max_search_passes")) options.features.max_search_passes = 0;
   for (const NamedOption& option : named) {
     const AnalysisOptionField* f = find_option(analysis_option_fields(), option.name);
     if (!f) throw InvalidArgument("unknown analysis option '" + option.name + "'");

@@ -49,7 +49,9 @@ namespace reebkit {
 /// at the centre of their tips (FeatureSite::Tips, features/feature_points.h),
 /// and the spectra of a surface without a frame of its own on the surface as
 /// given (attributes/region_spectra.h).
-inline constexpr int kCollectionLayoutVersion = 15;
+/// 16: the same columns; the diameter search held to four full passes
+/// (FeatureOptions::max_search_passes, features/feature_points.h).
+inline constexpr int kCollectionLayoutVersion = 16;
 
 /// Where the file came from: file attributes, and two groups.
 struct Provenance {
