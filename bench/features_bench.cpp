@@ -265,13 +265,14 @@ void register_shrec() {
   benchmark::RegisterBenchmark(("BM_FastMarchingFullPass_SHREC07/" + name).c_str(), [](benchmark::State& state) {
     run_full_passes<FastMarchingSolver>(state, shrec);
   })->Unit(benchmark::kMillisecond);
-  // Default options, the search held to four passes (FeatureOptions::max_search_passes)
-  // and the average rule.
-  FeatureOptions budget, average;
-  budget.max_search_passes = 4;
+  // Default options (the search held to four passes), the search without
+  // that bound (FeatureOptions::max_search_passes 0, layout 15) and the
+  // average rule.
+  FeatureOptions unbounded, average;
+  unbounded.max_search_passes = 0;
   average.rule = FeatureRule::Average;
   const std::pair<std::string, FeatureOptions> variants[] = {{"", FeatureOptions{}},
-                                                             {"/max_search_passes:4", budget},
+                                                             {"/max_search_passes:0", unbounded},
                                                              {"/feature_rule:average", average}};
   for (const auto& [suffix, options] : variants)
     benchmark::RegisterBenchmark(("BM_FullPasses_SHREC07All" + suffix).c_str(),
