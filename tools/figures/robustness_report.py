@@ -524,13 +524,16 @@ def paired_cells(base, other, rng):
     variants gaining and losing, and its 95 % interval when the variants are
     resampled. A difference whose interval holds 0 is within what another
     draw of meshes could give."""
-    def values(work, kind, strength, value):
-        return {(r["group"], r["mesh"]): value(r) for r in sampling_rows(work)
-                if r["kind"] == kind and float(r["strength"]) == strength and r["method"] == "fmm"}
+    base_rows, other_rows = ([r for r in sampling_rows(work) if r["method"] == "fmm"] for work in (base, other))
+
+    def values(rows, kind, strength, value):
+        return {(r["group"], r["mesh"]): value(r) for r in rows
+                if r["kind"] == kind and float(r["strength"]) == strength}
 
     cells = []
     for _, kind, strength, value in PAIRED_FIGURES:
-        r = paired_difference(values(base, kind, strength, value), values(other, kind, strength, value), rng)
+        r = paired_difference(values(base_rows, kind, strength, value), values(other_rows, kind, strength, value),
+                              rng)
         cells.append("-" if r is None else
                      f"{100 * r[0]:+.1f} ({r[1]} / {r[2]}; {100 * r[3][0]:+.1f} to {100 * r[3][1]:+.1f})")
     return cells
@@ -574,7 +577,8 @@ def main():
                "the diameter search started at the vertex farthest from the area centroid "
                "(`--diameter-start centroid`; from vertex 0 before layout 11: sections 2 and 3 compare them), up to "
                "3 extra sweeps, at most 4 full passes for the diameter ends, f1 and f2 together "
-               "(`--max-search-passes 4`; no bound before layout 16: sections 2 and 3 compare them), leaves only at the maxima of f_q (`--leaves maxima`: the pits of the propagation "
+               "(`--max-search-passes 4`; no bound before layout 16: sections 2 and 3 compare them), "
+               "leaves only at the maxima of f_q (`--leaves maxima`: the pits of the propagation "
                "cancelled; docs/results.md, \"Leaves at the maxima of f_q\", compares it with `propagation`). "
                "Dijkstra (`dijkstra`), the paper's method and reebkit's default before layout 7, is measured beside "
                "it in sections 2, 3 and 6: old and new side by side.\n")
