@@ -86,8 +86,9 @@ SurfaceFrame surface_frame(const Mesh& mesh) {
   double area = 0.0;
   Vec3 first = Vec3::Zero();
   Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
+  std::vector<double> triangle_areas(static_cast<std::size_t>(mesh.num_triangles()));
   for (Index t = 0; t < mesh.num_triangles(); ++t) {
-    const double a = triangle_area(mesh, t);
+    const double a = triangle_areas[static_cast<std::size_t>(t)] = triangle_area(mesh, t);
     Vec3 sum = Vec3::Zero();
     Eigen::Matrix3d outer = Eigen::Matrix3d::Zero();
     for (int c = 0; c < 3; ++c) {
@@ -107,14 +108,18 @@ SurfaceFrame surface_frame(const Mesh& mesh) {
   const Vec3 moment = axes.eigenvalues();
   out.axis_gap = moment(2) > 0.0 ? std::min(moment(2) - moment(1), moment(1) - moment(0)) / moment(2) : 0.0;
   for (int d = 0; d < 3; ++d) out.axes.row(d) = axes.eigenvectors().col(2 - d).transpose() / std::sqrt(area);
-  // Third moments about each axis, from the triangle centroids.
-  const auto place = [&](Index v) -> Vec3 {
-    return out.axes * (mesh.vertices.row(v).transpose() - out.origin - out.centroid);
+  // Third moments about each axis, from the triangle centroids (each vertex
+  // placed in the frame once).
+  std::vector<Vec3> placed(static_cast<std::size_t>(mesh.num_vertices()));
+  for (Index v = 0; v < mesh.num_vertices(); ++v)
+    placed[static_cast<std::size_t>(v)] = out.axes * (mesh.vertices.row(v).transpose() - out.origin - out.centroid);
+  const auto place = [&](Index t, int c) -> const Vec3& {
+    return placed[static_cast<std::size_t>(mesh.triangles(t, c))];
   };
   Vec3 third = Vec3::Zero();
   for (Index t = 0; t < mesh.num_triangles(); ++t) {
-    const Vec3 c = (place(mesh.triangles(t, 0)) + place(mesh.triangles(t, 1)) + place(mesh.triangles(t, 2))) / 3.0;
-    third += triangle_area(mesh, t) * c.cwiseProduct(c).cwiseProduct(c);
+    const Vec3 c = (place(t, 0) + place(t, 1) + place(t, 2)) / 3.0;
+    third += triangle_areas[static_cast<std::size_t>(t)] * c.cwiseProduct(c).cwiseProduct(c);
   }
   for (int d = 0; d < 3; ++d)
     if (third(d) < 0.0) out.axes.row(d) *= -1.0;
@@ -124,6 +129,7 @@ SurfaceFrame surface_frame(const Mesh& mesh) {
 CanonicalCopy canonical_copy(const Mesh& mesh) { return canonical_copy(mesh, surface_frame(mesh)); }
 
 CanonicalCopy canonical_copy(const Mesh& mesh, const SurfaceFrame& frame) {
+  constexpr double kGrid = 1048576.0;  // 2^20
   CanonicalCopy out;
   if (!(frame.area > 0.0)) {
     out.mesh = mesh;
@@ -137,38 +143,56 @@ CanonicalCopy canonical_copy(const Mesh& mesh, const SurfaceFrame& frame) {
   };
 
   const Index n = mesh.num_vertices();
-  std::vector<std::array<double, 3>> position(static_cast<std::size_t>(n));
+  // Each vertex's place snapped to a grid of 2^-20 (exact: a power of two
+  // scales without rounding), beside its id, sorted in place (no look-up
+  // per comparison): lexicographic, ties by id, as a stable sort would.
+  struct Snapped {
+    std::array<double, 3> position;
+    Index vertex;
+  };
+  std::vector<Snapped> snapped(static_cast<std::size_t>(n));
   for (Index v = 0; v < n; ++v) {
     const Vec3 p = place(v);
-    std::array<double, 3>& snapped = position[static_cast<std::size_t>(v)];
-    for (int d = 0; d < 3; ++d)
-      snapped[static_cast<std::size_t>(d)] = std::ldexp(std::nearbyint(std::ldexp(p(d), 20)), -20);
+    Snapped& s = snapped[static_cast<std::size_t>(v)];
+    for (int d = 0; d < 3; ++d) s.position[static_cast<std::size_t>(d)] = std::nearbyint(p(d) * kGrid) / kGrid;
+    s.vertex = v;
   }
-  out.original_vertex.resize(static_cast<std::size_t>(n));
-  std::iota(out.original_vertex.begin(), out.original_vertex.end(), Index{0});
-  std::stable_sort(out.original_vertex.begin(), out.original_vertex.end(), [&](Index a, Index b) {
-    return position[static_cast<std::size_t>(a)] < position[static_cast<std::size_t>(b)];
+  std::sort(snapped.begin(), snapped.end(), [](const Snapped& a, const Snapped& b) {
+    return a.position != b.position ? a.position < b.position : a.vertex < b.vertex;
   });
   std::vector<Index> new_id(static_cast<std::size_t>(n));
+  out.original_vertex.resize(static_cast<std::size_t>(n));
   out.mesh.source = mesh.source;
   out.mesh.vertices.resize(n, 3);
   if (!mesh.source_vertex.empty()) out.mesh.source_vertex.resize(static_cast<std::size_t>(n));
   for (Index v = 0; v < n; ++v) {
-    const Index from = out.original_vertex[static_cast<std::size_t>(v)];
-    new_id[static_cast<std::size_t>(from)] = v;
-    if (!mesh.source_vertex.empty()) out.mesh.source_vertex[static_cast<std::size_t>(v)] = mesh.source_index(from);
-    for (int d = 0; d < 3; ++d)
-      out.mesh.vertices(v, d) = position[static_cast<std::size_t>(from)][static_cast<std::size_t>(d)];
+    const Snapped& s = snapped[static_cast<std::size_t>(v)];
+    out.original_vertex[static_cast<std::size_t>(v)] = s.vertex;
+    new_id[static_cast<std::size_t>(s.vertex)] = v;
+    if (!mesh.source_vertex.empty()) out.mesh.source_vertex[static_cast<std::size_t>(v)] = mesh.source_index(s.vertex);
+    for (int d = 0; d < 3; ++d) out.mesh.vertices(v, d) = s.position[static_cast<std::size_t>(d)];
   }
-  std::vector<std::array<Index, 3>> triangles(static_cast<std::size_t>(mesh.num_triangles()));
-  for (Index t = 0; t < mesh.num_triangles(); ++t) {
-    std::array<Index, 3>& k = triangles[static_cast<std::size_t>(t)];
+  // The triangles, each rotated to start at its smallest new id (the
+  // orientation kept), in lexicographic order: grouped by that first id (a
+  // counting sort), each group (a vertex's few triangles) sorted on the rest.
+  const Index m = mesh.num_triangles();
+  std::vector<Index> first(static_cast<std::size_t>(n) + 1, 0);
+  std::vector<std::array<Index, 3>> rotated(static_cast<std::size_t>(m));
+  for (Index t = 0; t < m; ++t) {
+    std::array<Index, 3>& k = rotated[static_cast<std::size_t>(t)];
     for (int c = 0; c < 3; ++c) k[static_cast<std::size_t>(c)] = new_id[static_cast<std::size_t>(mesh.triangles(t, c))];
-    std::rotate(k.begin(), std::min_element(k.begin(), k.end()), k.end());  // the orientation kept
+    std::rotate(k.begin(), std::min_element(k.begin(), k.end()), k.end());
+    ++first[static_cast<std::size_t>(k[0]) + 1];
   }
-  std::sort(triangles.begin(), triangles.end());
-  out.mesh.triangles.resize(mesh.num_triangles(), 3);
-  for (Index t = 0; t < mesh.num_triangles(); ++t)
+  for (std::size_t v = 0; v < static_cast<std::size_t>(n); ++v) first[v + 1] += first[v];
+  std::vector<std::array<Index, 3>> triangles(static_cast<std::size_t>(m));
+  std::vector<Index> fill(first.begin(), first.end() - 1);
+  for (const std::array<Index, 3>& k : rotated)
+    triangles[static_cast<std::size_t>(fill[static_cast<std::size_t>(k[0])]++)] = k;
+  for (std::size_t v = 0; v < static_cast<std::size_t>(n); ++v)
+    std::sort(triangles.begin() + first[v], triangles.begin() + first[v + 1]);
+  out.mesh.triangles.resize(m, 3);
+  for (Index t = 0; t < m; ++t)
     for (int c = 0; c < 3; ++c)
       out.mesh.triangles(t, c) = triangles[static_cast<std::size_t>(t)][static_cast<std::size_t>(c)];
   return out;
