@@ -76,7 +76,7 @@ struct Measurement {
 
 AnalysisOptions g_options = [] {  // --geodesic and --level-lines set the analysis
   AnalysisOptions options;
-  options.spectra_surface = false;  // the graph alone
+  options.prepare_attributes = false;  // the graph alone
   return options;
 }();
 

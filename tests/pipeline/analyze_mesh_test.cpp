@@ -101,17 +101,49 @@ TEST(AnalyzeMesh, OneThreadOrTwoGiveTheSameGraphAndAttributes) {
   EXPECT_EQ(parallel_attributes.edge, serial_attributes.edge);
   EXPECT_EQ(parallel_attributes.signature, serial_attributes.signature);
   EXPECT_GT(serial.timings.spectra_surface, 0.0);
+  // The region measures, taken with the feature points' solver after the
+  // graph, are those compute_attributes takes with a solver of its own.
+  ASSERT_EQ(serial.measures.sums.node_area.size(), serial.reeb.nodes.size());
+  EXPECT_GT(serial.timings.measures, 0.0);
   const GraphAttributes unprepared = compute_attributes(serial.mesh, serial.graph, serial.fq.value, serial.features,
-                                                        serial.reeb);  // prepares its own surface
+                                                        serial.reeb);  // prepares its own surface and measures
   EXPECT_EQ(unprepared.node, serial_attributes.node);
+  EXPECT_EQ(unprepared.edge, serial_attributes.edge);
   EXPECT_EQ(unprepared.signature, serial_attributes.signature);
-  // Or the analysis leaves it to compute_attributes.
+  // Or the analysis leaves both to compute_attributes.
   AnalysisOptions graph_alone;
-  graph_alone.spectra_surface = false;
+  graph_alone.prepare_attributes = false;
   const MeshAnalysis bare = analyze_mesh(bunny, graph_alone);
   EXPECT_TRUE(bare.spectra.global.empty());
+  EXPECT_TRUE(bare.measures.sums.node_area.empty());
   EXPECT_EQ(bare.timings.spectra_surface, 0.0);
+  EXPECT_EQ(bare.timings.measures, 0.0);
   EXPECT_EQ(compute_attributes(bare).signature, serial_attributes.signature);
+}
+
+TEST(AnalyzeMesh, MeasuresOfAnotherGraphOrSolverAreRefused) {
+  const MeshAnalysis torus = analyze_mesh(make_torus(40, 16, 1.0, 0.3));
+  const MeshAnalysis sphere = analyze_mesh(make_icosphere(3));
+  // Measures of the torus's graph handed with the sphere's.
+  EXPECT_THROW(compute_attributes(sphere.mesh, sphere.graph, sphere.fq.value, sphere.features, sphere.reeb,
+                                  &sphere.spectra, sphere.spectra_options, &torus.measures),
+               InvalidArgument);
+  // A solver of another graph, or of another method than the feature points'.
+  const std::unique_ptr<GeodesicSolver> other_graph = make_geodesic_solver(torus.graph, sphere.features.geodesic);
+  EXPECT_THROW(measure_regions(sphere.mesh, sphere.graph, sphere.fq.value, sphere.features, sphere.reeb,
+                               other_graph.get()),
+               InvalidArgument);
+  const Geodesic other = sphere.features.geodesic == Geodesic::Dijkstra ? Geodesic::FastMarching : Geodesic::Dijkstra;
+  const std::unique_ptr<GeodesicSolver> other_method = make_geodesic_solver(sphere.graph, other);
+  EXPECT_THROW(measure_regions(sphere.mesh, sphere.graph, sphere.fq.value, sphere.features, sphere.reeb,
+                               other_method.get()),
+               InvalidArgument);
+  // The right solver gives what a solver of its own gives.
+  const std::unique_ptr<GeodesicSolver> same = make_geodesic_solver(sphere.graph, sphere.features.geodesic);
+  const RegionMeasures with_solver =
+      measure_regions(sphere.mesh, sphere.graph, sphere.fq.value, sphere.features, sphere.reeb, same.get());
+  EXPECT_EQ(with_solver.geodesics.extent, sphere.measures.geodesics.extent);
+  EXPECT_EQ(with_solver.geodesics.histogram, sphere.measures.geodesics.histogram);
 }
 
 TEST(AnalyzeMesh, RejectsADisconnectedMesh) {

@@ -36,7 +36,7 @@ TEST(ReebShrec, CyclesEqualGenusAndEveryLeafHoldsAFeaturePoint) {
   // vertices on 284, 287 and 290) are cancelled (pit_cancellation.h).
   std::ostringstream failures, pits;
   AnalysisOptions options;  // the defaults, but for the attributes' spectra, which this test does not read
-  options.spectra_surface = false;
+  options.prepare_attributes = false;
   for (const auto& [file, g] : genus) {
     const MeshAnalysis a = analyze_mesh(load_mesh(dir / file).components.front(), options);
     const int cycles = a.reeb.independent_cycles();

@@ -83,7 +83,9 @@ int run_deform(const std::vector<std::string>& args) {
   check_outputs({out_path}, {mesh_path});
 
   CleanedMesh cleaned = load_for_command(mesh_path, false).cleaned;
-  const MeshAnalysis analysis = analyze_mesh(std::move(cleaned.components.front()));
+  AnalysisOptions graph_alone;  // no attributes: the graph and its regions are what a deformation needs
+  graph_alone.prepare_attributes = false;
+  const MeshAnalysis analysis = analyze_mesh(std::move(cleaned.components.front()), graph_alone);
   std::cout << mesh_path << ": " << analysis.mesh.num_vertices() << " vertices, " << analysis.reeb.num_nodes()
             << " Reeb graph nodes, " << analysis.features.vertices.size() << " feature points\n";
   if (!vm.count("node")) {

@@ -34,6 +34,7 @@ void print_summary(const std::vector<MeshAnalysis>& results) {
     time.features += r.timings.features;
     time.quotient += r.timings.quotient;
     time.reeb += r.timings.reeb;
+    time.measures += r.timings.measures;
     time.spectra_surface += r.timings.spectra_surface;
   }
   std::cout << vertices << " vertices, " << features << " feature points\n"
@@ -42,8 +43,8 @@ void print_summary(const std::vector<MeshAnalysis>& results) {
     std::cout << " " << count[static_cast<int>(type)] << " " << node_type_name(type);
   std::cout << "; " << leaves << " leaves, " << cycles << " cycles\n"
             << std::fixed << std::setprecision(2) << "time: graph " << time.graph << " ms, features " << time.features
-            << " ms, f_q " << time.quotient << " ms, Reeb graph " << time.reeb
-            << " ms; the spectra's surface and its spectrum " << time.spectra_surface
+            << " ms, f_q " << time.quotient << " ms, Reeb graph " << time.reeb << " ms, region measures "
+            << time.measures << " ms; the spectra's surface and its spectrum " << time.spectra_surface
             << " ms (beside them where a second thread is free)\n"
             << std::defaultfloat;
 }

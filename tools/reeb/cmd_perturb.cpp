@@ -158,6 +158,7 @@ int run_perturb(const std::vector<std::string>& args) {
     mesh = std::move(variant.mesh);
   };
   if (vm.count("pose")) {
+    pose_graph.prepare_attributes = false;  // the graph alone: its leaves are what --pose turns
     const MeshAnalysis planned = analyze_mesh(original, pose_graph);
     step("pose", Perturbation{PerturbationKind::Pose, 0, {}, pose_seed, pose}, &planned);
   }

@@ -77,7 +77,9 @@ int run_variants(const std::vector<std::string>& args) {
     const std::string& name = names[i];
     std::mt19937_64 rng(seed + 0x9E3779B97F4A7C15ull * (i + 1));
     CleanedMesh cleaned = load_for_command(meshes[i].path.string(), false).cleaned;
-    const MeshAnalysis analysis = analyze_mesh(std::move(cleaned.components.front()));
+    AnalysisOptions graph_alone;  // no attributes: the poses turn the graph's leaves
+    graph_alone.prepare_attributes = false;
+    const MeshAnalysis analysis = analyze_mesh(std::move(cleaned.components.front()), graph_alone);
     const Mesh& mesh = analysis.mesh;
 
     std::vector<std::pair<std::string, Mesh>> variants;

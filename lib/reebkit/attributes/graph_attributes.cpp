@@ -151,17 +151,11 @@ void add_to_histogram(double* h, int bins, double x, double weight) {
   h[b + 1] += weight * (y - b);
 }
 
-/// What the searches inside the regions give (see the file comment).
-struct RegionGeodesics {
-  std::vector<double> extent;     ///< per node, unnormalized
-  std::vector<double> histogram;  ///< kNodeGeodesicHistogram, #nodes x kShapeBins, row-major
-};
-
 /// Geodesic extent and geodesic histogram of every region (see the file
 /// comment); `vertex_area` and `node_area` weigh the vertices and the regions.
-RegionGeodesics region_geodesics(const MeshGraph& graph, Geodesic method, const std::vector<double>& f,
-                                 const ReebGraph& reeb, const std::vector<double>& vertex_area,
-                                 const std::vector<double>& node_area) {
+RegionGeodesics region_geodesics(GeodesicSolver& solver, const std::vector<double>& f, const ReebGraph& reeb,
+                                 const std::vector<double>& vertex_area, const std::vector<double>& node_area) {
+  const MeshGraph& graph = solver.graph();
   const Index n = graph.num_vertices();
   // Vertices grouped by region (counting sort), ascending ids within a region.
   std::vector<Index> first(reeb.nodes.size() + 1, 0);
@@ -180,7 +174,6 @@ RegionGeodesics region_geodesics(const MeshGraph& graph, Geodesic method, const 
   // searches for node may go.
   std::vector<Index> stamp(at(n), kInvalidIndex);
   std::vector<Index> source(1);
-  const std::unique_ptr<GeodesicSolver> solver = make_geodesic_solver(graph, method);
   GeodesicOptions options;
   options.labels = &stamp;
   for (Index node = 0; node < reeb.num_nodes(); ++node) {
@@ -200,9 +193,9 @@ RegionGeodesics region_geodesics(const MeshGraph& graph, Geodesic method, const 
       for (const Index* v = begin; v != end; ++v)
         if (!done[at(*v)] && (source[0] == kInvalidIndex || f[at(*v)] >= f[at(source[0])])) source[0] = *v;
       if (source[0] == kInvalidIndex) break;
-      const DistanceField& field = solver->run(source, options);
+      const DistanceField& field = solver.run(source, options);
       // Vertices settle by distance: the last region vertex is the farthest.
-      const auto& settled = solver->settled();
+      const auto& settled = solver.settled();
       const auto far =
           std::find_if(settled.rbegin(), settled.rend(), [&](Index w) { return reeb.vertex_node[at(w)] == node; });
       extent[at(node)] = std::max(extent[at(node)], field.distance[at(*far)]);
@@ -216,15 +209,6 @@ RegionGeodesics region_geodesics(const MeshGraph& graph, Geodesic method, const 
   }
   return out;
 }
-
-/// What one pass over the triangles gathers (see the file comment).
-struct TriangleSums {
-  std::vector<double> vertex_area;    ///< a third of the area of each triangle of the surface as read at its vertices
-  std::vector<double> node_area;      ///< per node, over the surface as read
-  double total_area = 0.0;            ///< of the surface as read
-  std::vector<double> level_length;   ///< isocontour lengths, #nodes x kLevels, row-major
-  std::vector<double> border_length;  ///< per graph edge
-};
 
 TriangleSums triangle_sums(const Mesh& mesh, Index original_vertices, const std::vector<double>& f,
                            const ReebGraph& reeb) {
@@ -387,12 +371,10 @@ void laplacian_spectrum(const ReebGraph& reeb, const std::vector<double>& degree
   for (int i = 0; i < kEigenvalues; ++i) out[i] = i + 1 < n ? std::clamp(eigenvalues(i + 1), 0.0, 2.0) / 2.0 : 0.5;
 }
 
-}  // namespace
-
-GraphAttributes compute_attributes(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f,
-                                   const FeaturePoints& features, const ReebGraph& reeb,
-                                   const SpectraSurface* spectra_surface, const SpectraOptions& spectra_options) {
-  const double geodesic_diameter = features.diameter;
+/// Throws InvalidArgument unless reeb has nodes and mesh, graph, f, the
+/// feature points' fields and reeb.vertex_node agree in vertex count.
+void check_inputs(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f, const FeaturePoints& features,
+                  const ReebGraph& reeb) {
   const auto where = [&] { return mesh.source.empty() ? std::string("mesh in memory") : mesh.source; };
   if (reeb.nodes.empty())
     throw InvalidArgument("compute_attributes: " + where() +
@@ -406,25 +388,63 @@ GraphAttributes compute_attributes(const Mesh& mesh, const MeshGraph& graph, con
     throw InvalidArgument("compute_attributes: " + where() +
                           ": the mesh, its graph, f_q, the feature points' f1 and f2 and the segmentation differ in "
                           "vertex count");
+}
 
+RegionMeasures measured(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f,
+                        const FeaturePoints& features, const ReebGraph& reeb, GeodesicSolver* solver) {
+  RegionMeasures out;
   const Index original_vertices = original_vertex_count(mesh);
-  // The spectra beside the sums, geodesics and shape distributions.
-  TriangleSums sums;
-  RegionGeodesics regions;
-  std::array<double, kGlobalShapeBins> global_shape{};
-  std::vector<double> shape;
+  out.sums = triangle_sums(mesh, original_vertices, f, reeb);
+  std::unique_ptr<GeodesicSolver> own;
+  if (!solver) {
+    own = make_geodesic_solver(graph, features.geodesic);
+    solver = own.get();
+  }
+  out.geodesics = region_geodesics(*solver, f, reeb, out.sums.vertex_area, out.sums.node_area);
+  out.global_shape.assign(kGlobalShapeBins, 0.0);
+  out.shape = shape_histograms(mesh, original_vertices, reeb, out.global_shape.data());
+  return out;
+}
+
+}  // namespace
+
+RegionMeasures measure_regions(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f,
+                               const FeaturePoints& features, const ReebGraph& reeb, GeodesicSolver* solver) {
+  check_inputs(mesh, graph, f, features, reeb);
+  if (solver && (&solver->graph() != &graph || solver->method() != features.geodesic))
+    throw InvalidArgument("measure_regions: " + (mesh.source.empty() ? std::string("mesh in memory") : mesh.source) +
+                          ": a geodesic solver of another graph or method than the feature points'");
+  return measured(mesh, graph, f, features, reeb, solver);
+}
+
+GraphAttributes compute_attributes(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f,
+                                   const FeaturePoints& features, const ReebGraph& reeb,
+                                   const SpectraSurface* spectra_surface, const SpectraOptions& spectra_options,
+                                   const RegionMeasures* prepared) {
+  check_inputs(mesh, graph, f, features, reeb);
+  if (prepared && (prepared->sums.node_area.size() != reeb.nodes.size() ||
+                   prepared->sums.border_length.size() != reeb.edges.size() ||
+                   prepared->sums.vertex_area.size() != at(mesh.num_vertices())))
+    throw InvalidArgument("compute_attributes: " + (mesh.source.empty() ? std::string("mesh in memory") : mesh.source) +
+                          ": region measures of another graph or mesh");
+  const double geodesic_diameter = features.diameter;
+  const Index original_vertices = original_vertex_count(mesh);
+  // The spectra beside the region measures, unless these come prepared.
+  RegionMeasures measures;
   SurfaceSpectra spectra;
-  run_side_by_side(
-      [&] {
-        spectra = spectra_surface
-                      ? surface_spectra(mesh, *spectra_surface, reeb.vertex_node, reeb.num_nodes(), spectra_options)
-                      : surface_spectra(mesh, reeb.vertex_node, reeb.num_nodes(), spectra_options);
-      },
-      [&] {
-        sums = triangle_sums(mesh, original_vertices, f, reeb);
-        regions = region_geodesics(graph, features.geodesic, f, reeb, sums.vertex_area, sums.node_area);
-        shape = shape_histograms(mesh, original_vertices, reeb, global_shape.data());
-      });
+  const auto spectra_of_regions = [&] {
+    spectra = spectra_surface
+                  ? surface_spectra(mesh, *spectra_surface, reeb.vertex_node, reeb.num_nodes(), spectra_options)
+                  : surface_spectra(mesh, reeb.vertex_node, reeb.num_nodes(), spectra_options);
+  };
+  if (prepared)
+    spectra_of_regions();
+  else
+    run_side_by_side(spectra_of_regions, [&] { measures = measured(mesh, graph, f, features, reeb, nullptr); });
+  const RegionMeasures& m = prepared ? *prepared : measures;
+  const TriangleSums& sums = m.sums;
+  const RegionGeodesics& regions = m.geodesics;
+  const std::vector<double>& shape = m.shape;
   const double length_unit = sums.total_area > 0.0 ? std::sqrt(sums.total_area) : 1.0;
   const double diameter = geodesic_diameter > 0.0 ? geodesic_diameter : 1.0;
   const auto relative = [](double value, double whole) { return whole > 0.0 ? value / whole : 0.0; };
@@ -493,7 +513,7 @@ GraphAttributes compute_attributes(const Mesh& mesh, const MeshGraph& graph, con
   largest(std::move(leaf_area), sig + kSigLeafArea, kLeafSlots);
   largest(std::move(leaf_extent), sig + kSigLeafExtent, kLeafSlots);
   laplacian_spectrum(reeb, degree, sig + kSigEigenvalues);
-  std::copy(global_shape.begin(), global_shape.end(), sig + kSigGlobalShape);
+  std::copy(m.global_shape.begin(), m.global_shape.end(), sig + kSigGlobalShape);
   main_axis_histogram(features, sums, sig + kSigGlobalGeodesic);
   std::copy(spectra.global.begin(), spectra.global.end(), sig + kSigGlobalSpectrum);
   return out;

@@ -23,23 +23,27 @@ MeshAnalysis analyze_mesh(Mesh mesh, const AnalysisOptions& options) {
     a.graph = build_mesh_graph(a.mesh);
   }
   a.timings.graph = timer.lap();
-  // The graph (feature points, f_q, Reeb graph) beside the spectra's surface.
+  // The graph (feature points, f_q, Reeb graph, region measures) beside the
+  // spectra's surface.
   run_side_by_side(
       [&] {
-        {  // one solver for the feature points and f_q, freed before the Reeb graph
-          const std::unique_ptr<GeodesicSolver> solver = make_geodesic_solver(a.graph, options.features.geodesic);
-          a.features = extract_feature_points(a.mesh, a.graph, options.features, *solver);
-          a.timings.features = timer.lap();
-          a.fq = quotient_function(*solver, a.features);
-          a.timings.quotient = timer.lap();
-        }
+        // One solver for the feature points, f_q and the region measures.
+        const std::unique_ptr<GeodesicSolver> solver = make_geodesic_solver(a.graph, options.features.geodesic);
+        a.features = extract_feature_points(a.mesh, a.graph, options.features, *solver);
+        a.timings.features = timer.lap();
+        a.fq = quotient_function(*solver, a.features);
+        a.timings.quotient = timer.lap();
         if (options.reeb_graph) {
           a.reeb = build_reeb_graph(a.mesh, a.graph, a.fq.value, options.reeb);
           a.timings.reeb = timer.lap();
+          if (options.prepare_attributes) {
+            a.measures = measure_regions(a.mesh, a.graph, a.fq.value, a.features, a.reeb, solver.get());
+            a.timings.measures = timer.lap();
+          }
         }
       },
       [&] {
-        if (!options.reeb_graph || !options.spectra_surface) return;
+        if (!options.reeb_graph || !options.prepare_attributes) return;
         Timer steps;
         a.spectra = spectra_surface(a.mesh, options.spectra);
         a.timings.spectra_surface = steps.lap();
@@ -49,8 +53,10 @@ MeshAnalysis analyze_mesh(Mesh mesh, const AnalysisOptions& options) {
 
 GraphAttributes compute_attributes(const MeshAnalysis& analysis) {
   const bool prepared = !analysis.spectra.global.empty();
+  const bool measured = !analysis.measures.sums.node_area.empty();
   return compute_attributes(analysis.mesh, analysis.graph, analysis.fq.value, analysis.features, analysis.reeb,
-                            prepared ? &analysis.spectra : nullptr, analysis.spectra_options);
+                            prepared ? &analysis.spectra : nullptr, analysis.spectra_options,
+                            measured ? &analysis.measures : nullptr);
 }
 
 }  // namespace reebkit

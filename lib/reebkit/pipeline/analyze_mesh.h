@@ -20,11 +20,13 @@ struct AnalysisOptions {
   FeatureOptions features;  ///< feature point extraction (epsilon, start vertex, ...)
   ReebOptions reeb;         ///< Reeb graph construction
   bool reeb_graph = true;   ///< false: stop after f_q (no Reeb graph)
-  /// With a Reeb graph, also prepare the surface the attributes' spectra are
-  /// computed on and its spectrum (MeshAnalysis::spectra), beside the graph
-  /// on a second thread where one is free; compute_attributes reuses them. false: the
-  /// analysis is the graph alone, and compute_attributes prepares it.
-  bool spectra_surface = true;
+  /// With a Reeb graph, also prepare what compute_attributes takes from the
+  /// surface: the surface the attributes' spectra are computed on and its
+  /// spectrum (MeshAnalysis::spectra), beside the graph on a second thread
+  /// where one is free, and the region measures (MeshAnalysis::measures)
+  /// after the graph on its own thread. false: the analysis is the graph
+  /// alone, and compute_attributes prepares both.
+  bool prepare_attributes = true;
   /// The attributes' spectra (region_spectra.h): whether the regions get
   /// theirs, and the copies they are computed on.
   SpectraOptions spectra;
@@ -40,6 +42,9 @@ struct AnalysisTimings {
   /// spectra and the whole surface's spectrum): run alongside
   /// features .. Reeb graph where a second thread is free, so not in total().
   double spectra_surface = 0;
+  /// measure_regions (graph_attributes.h), after the Reeb graph: attributes'
+  /// work, so not in total() either.
+  double measures = 0;
   double total() const { return graph + features + quotient + reeb; }
 };
 
@@ -52,17 +57,21 @@ struct MeshAnalysis {
   ReebGraph reeb;  ///< empty when options.reeb_graph is false
   /// The whole surface's spectrum and, with the regions' spectra, the
   /// surface they are cut from (spectra_surface, region_spectra.h); empty
-  /// unless options.reeb_graph and options.spectra_surface.
+  /// unless options.reeb_graph and options.prepare_attributes.
   SpectraSurface spectra;
+  /// The attributes' measures of the surface but the spectra
+  /// (measure_regions); empty under the same conditions.
+  RegionMeasures measures;
   SpectraOptions spectra_options;  ///< AnalysisOptions::spectra, for compute_attributes
   AnalysisTimings timings;
 };
 
 /// Runs the pipeline on a cleaned, connected mesh (see load_mesh). With a
-/// Reeb graph (and options.spectra_surface), the surface of the attributes'
-/// spectra and its spectrum are prepared on a second OpenMP thread while the feature points,
-/// f_q and the graph are computed (on one thread inside a parallel region,
-/// e.g. reeb index's workers). Throws InvalidArgument when the mesh graph is
+/// Reeb graph (and options.prepare_attributes), the surface of the
+/// attributes' spectra and its spectrum are prepared on a second OpenMP
+/// thread while the feature points, f_q, the graph and then the region
+/// measures are computed (on one thread inside a parallel region, e.g. reeb
+/// index's workers). Throws InvalidArgument when the mesh graph is
 /// not connected.
 MeshAnalysis analyze_mesh(Mesh mesh, const AnalysisOptions& options = {});
 

@@ -67,7 +67,7 @@ GraphRecord analyze_mesh_file(const std::filesystem::path& path, std::string nam
   entry.name = std::move(name);
   entry.content_hash = hash;
   entry.timings[kTimeLoad] = load_ms;
-  entry.timings[kTimeAttributes] = attributes_ms + analysis.timings.spectra_surface;
+  entry.timings[kTimeAttributes] = attributes_ms + analysis.timings.spectra_surface + analysis.timings.measures;
   return entry;
 }
 
