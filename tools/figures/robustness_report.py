@@ -28,7 +28,8 @@ import numpy as np  # noqa: E402
 METHODS = ["dijkstra", "fmm"]
 
 # Earlier defaults that robustness.sh measures again beside today's (the
-# folder under the work directory, the two columns' names, what changed).
+# folder under the work directory, the two columns' names, what changed, why,
+# and how the pose section names the earlier analysis).
 EARLIER_DEFAULTS = [
     ("layout15", "no bound (layout 15)", "4 passes (today)",
      "the diameter search held to four full passes for its ends, f1 and f2 together (`--max-search-passes 4`, "
@@ -36,20 +37,23 @@ EARLIER_DEFAULTS = [
      "The bound makes the time of the search that of four passes on every mesh; which of several nearly tied "
      "pairs of ends a round or symmetric shape keeps moves with the sweeps either way, and the variant-by-variant "
      "differences below are within what another draw of the meshes could give (docs/results.md, \"A budget of "
-     "search passes\")"),
+     "search passes\")",
+     "layout 15's diameter search (no bound on its passes)"),
     ("layout14", "midpoint (layout 14)", "tips (today)",
      "the feature points other than the diameter ends at the centre of the tips around their pair "
      "(`--feature-site tips`, layout 15), against halfway between the pair's two extrema (`--feature-site "
      "midpoint`, layouts 10-14)",
      "On a limb that ends in nearly tied tips (fingers, toes) the extremum, and the midpoint with it, moves to "
-     "whichever tip a sampling or a pose makes the farthest; the centre of the tips does not"),
+     "whichever tip a sampling or a pose makes the farthest; the centre of the tips does not",
+     "layout 14's feature points (halfway between their two extrema)"),
     ("layout10", "from vertex 0 (layout 10)", "from the centroid (today)",
      "the diameter search started at the vertex farthest from the area centroid (`--diameter-start "
      "centroid`, layout 11), against the search from vertex 0 (`--diameter-start vertex`, layout 10), both "
      "under today's other defaults",
      "Vertex 0 lies wherever a file puts it, and the search from it ends on one or another of the nearly tied "
      "pairs of a symmetric shape; the vertex farthest from the centroid is the same point of the surface "
-     "however it is numbered"),
+     "however it is numbered",
+     "layout 10's diameter search (from vertex 0)"),
 ]
 
 # Paper section 5.1: seconds on a 3 GHz Pentium 4 for 2k, 10k, 40k and 100k faces.
@@ -262,7 +266,7 @@ def sampling_section(work, report, out):
                "graph. No selection rule can pin a diameter end that the surface itself does not single out; the "
                "retrieval of these shapes rests on the whole-surface terms of the matching (g_s, g_g: "
                "docs/method.md), which do not depend on the ends.\n")
-    for folder, old_name, new_name, what, why in EARLIER_DEFAULTS:
+    for folder, old_name, new_name, what, why, _ in EARLIER_DEFAULTS:
         earlier = [r for r in sampling_rows(work / folder) if r["kind"] != "pose"]
         if not earlier:
             continue
@@ -328,12 +332,10 @@ def pose_section(work, report, out):
                        f"{mean(across):.3f} |")
     out.append("")
     lines = []
-    earlier = [(" with layout 15's diameter search (no bound on its passes)", work / "layout15" / "tosca_poses.csv"),
-               (" with layout 14's feature points (halfway between their two extrema)",
-                work / "layout14" / "tosca_poses.csv"),
-               (" with layout 10's diameter search (from vertex 0)", work / "layout10" / "tosca_poses.csv"),
-               (" with layout 8's feature points (epsilon 0.05, persistence 0.01, on the extrema)",
-                work / "layout8" / "tosca_poses.csv")]
+    earlier = [(f" with {pose}", work / folder / "tosca_poses.csv") for folder, *_, pose in EARLIER_DEFAULTS]
+    # Layout 8 is measured under pose alone.
+    earlier.append((" with layout 8's feature points (epsilon 0.05, persistence 0.01, on the extrema)",
+                    work / "layout8" / "tosca_poses.csv"))
     for name, table in [("", rows)] + [(n, read(p)) for n, p in earlier if p.exists()]:
         for m in METHODS:
             rs = [r for r in table if r["method"] == m]
