@@ -371,21 +371,24 @@ void laplacian_spectrum(const ReebGraph& reeb, const std::vector<double>& degree
   for (int i = 0; i < kEigenvalues; ++i) out[i] = i + 1 < n ? std::clamp(eigenvalues(i + 1), 0.0, 2.0) / 2.0 : 0.5;
 }
 
-/// Throws InvalidArgument unless reeb has nodes and mesh, graph, f, the
-/// feature points' fields and reeb.vertex_node agree in vertex count.
-void check_inputs(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f, const FeaturePoints& features,
-                  const ReebGraph& reeb) {
-  const auto where = [&] { return mesh.source.empty() ? std::string("mesh in memory") : mesh.source; };
+/// The mesh's file, for error messages.
+std::string where(const Mesh& mesh) { return mesh.source.empty() ? std::string("mesh in memory") : mesh.source; }
+
+/// Throws InvalidArgument (its message starting with `caller`) unless reeb
+/// has nodes and mesh, graph, f, the feature points' fields and
+/// reeb.vertex_node agree in vertex count.
+void check_inputs(const char* caller, const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f,
+                  const FeaturePoints& features, const ReebGraph& reeb) {
+  const std::string prefix = std::string(caller) + ": " + where(mesh);
   if (reeb.nodes.empty())
-    throw InvalidArgument("compute_attributes: " + where() +
-                          " has no Reeb graph (analyzed with AnalysisOptions::reeb_graph = false)");
+    throw InvalidArgument(prefix + " has no Reeb graph (analyzed with AnalysisOptions::reeb_graph = false)");
   if (features.source1 < 0 || features.source1 >= mesh.num_vertices() || features.source2 < 0 ||
       features.source2 >= mesh.num_vertices())
-    throw InvalidArgument("compute_attributes: " + where() + ": the feature points have no diameter ends in the mesh");
+    throw InvalidArgument(prefix + ": the feature points have no diameter ends in the mesh");
   if (reeb.vertex_node.size() != at(mesh.num_vertices()) || f.size() != at(mesh.num_vertices()) ||
       graph.num_vertices() != mesh.num_vertices() || features.f1.size() != at(mesh.num_vertices()) ||
       features.f2.size() != at(mesh.num_vertices()))
-    throw InvalidArgument("compute_attributes: " + where() +
+    throw InvalidArgument(prefix +
                           ": the mesh, its graph, f_q, the feature points' f1 and f2 and the segmentation differ in "
                           "vertex count");
 }
@@ -410,9 +413,9 @@ RegionMeasures measured(const Mesh& mesh, const MeshGraph& graph, const std::vec
 
 RegionMeasures measure_regions(const Mesh& mesh, const MeshGraph& graph, const std::vector<double>& f,
                                const FeaturePoints& features, const ReebGraph& reeb, GeodesicSolver* solver) {
-  check_inputs(mesh, graph, f, features, reeb);
+  check_inputs("measure_regions", mesh, graph, f, features, reeb);
   if (solver && (&solver->graph() != &graph || solver->method() != features.geodesic))
-    throw InvalidArgument("measure_regions: " + (mesh.source.empty() ? std::string("mesh in memory") : mesh.source) +
+    throw InvalidArgument("measure_regions: " + where(mesh) +
                           ": a geodesic solver of another graph or method than the feature points'");
   return measured(mesh, graph, f, features, reeb, solver);
 }
@@ -421,12 +424,11 @@ GraphAttributes compute_attributes(const Mesh& mesh, const MeshGraph& graph, con
                                    const FeaturePoints& features, const ReebGraph& reeb,
                                    const SpectraSurface* spectra_surface, const SpectraOptions& spectra_options,
                                    const RegionMeasures* prepared) {
-  check_inputs(mesh, graph, f, features, reeb);
+  check_inputs("compute_attributes", mesh, graph, f, features, reeb);
   if (prepared && (prepared->sums.node_area.size() != reeb.nodes.size() ||
                    prepared->sums.border_length.size() != reeb.edges.size() ||
                    prepared->sums.vertex_area.size() != at(mesh.num_vertices())))
-    throw InvalidArgument("compute_attributes: " + (mesh.source.empty() ? std::string("mesh in memory") : mesh.source) +
-                          ": region measures of another graph or mesh");
+    throw InvalidArgument("compute_attributes: " + where(mesh) + ": region measures of another graph or mesh");
   const double geodesic_diameter = features.diameter;
   const Index original_vertices = original_vertex_count(mesh);
   // The spectra beside the region measures, unless these come prepared.
